@@ -1,0 +1,52 @@
+// Entry point of the refinement core (RR-7912, section 3).
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "rdmesh/criteria.h"
+#include "rdmesh/oracle.h"
+#include "rdmesh/tet_mesh.h"
+
+namespace rdmesh {
+
+/// Snapshot handed to the progress callback.
+struct Progress {
+  std::size_t vertices = 0;       ///< vertices in the triangulation
+  std::size_t facet_queue = 0;    ///< restricted facets waiting (R3, R4)
+  std::size_t cell_queue = 0;     ///< cells waiting (R5)
+  double elapsed_seconds = 0.0;
+};
+
+struct MeshOptions {
+  /// Called every few thousand insertions (and once at the end), from the calling thread.
+  std::function<void(const Progress&)> progress;
+};
+
+/// What refinement did, for the report.
+struct RefinementStats {
+  std::size_t initial_points = 0;
+  std::size_t inserted_facet_centers = 0;  ///< points inserted by R3/R4
+  std::size_t inserted_cell_centers = 0;   ///< points inserted by R5
+  std::size_t encroachments = 0;           ///< cell centers redirected to a facet (refine-tet-facet-or-edge)
+  std::size_t guard_rejections = 0;        ///< refinement points refused by the minimum-size guard
+  bool guard_fired() const { return guard_rejections > 0; }
+  double seconds_initial = 0.0;
+  double seconds_refine = 0.0;
+  double seconds_extract = 0.0;
+};
+
+struct MeshResult {
+  TetMesh mesh;
+  RefinementStats stats;
+};
+
+/// Runs Delaunay refinement on `oracle` until every rule R3-R5 is satisfied
+/// (or the guard stops it) and returns the restricted mesh D|O with D|S.
+/// Throws InputError for invalid criteria, OracleError when the oracle fails.
+MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& criteria,
+                         const MeshOptions& options = {});
+
+}  // namespace rdmesh

@@ -1,0 +1,72 @@
+// Plain geometric value types shared by every layer of rdmesh.
+//
+// These types are deliberately free of CGAL so that oracles, writers and the
+// CLI compile quickly; the refinement core converts at its boundary.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <compare>
+#include <functional>
+
+namespace rdmesh {
+
+/// A point (or vector) in R^3.
+struct Point3 {
+  double x = 0, y = 0, z = 0;
+  friend Point3 operator+(Point3 a, Point3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+  friend Point3 operator-(Point3 a, Point3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+  friend Point3 operator*(double s, Point3 a) { return {s * a.x, s * a.y, s * a.z}; }
+  friend bool operator==(const Point3&, const Point3&) = default;
+};
+
+inline double dot(Point3 a, Point3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+inline Point3 cross(Point3 a, Point3 b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+inline double squared_norm(Point3 a) { return dot(a, a); }
+inline double norm(Point3 a) { return std::sqrt(dot(a, a)); }
+inline double distance(Point3 a, Point3 b) { return norm(a - b); }
+
+/// Axis-aligned box [lo, hi].
+struct Box3 {
+  Point3 lo, hi;
+  double diagonal() const { return distance(lo, hi); }
+  Point3 center() const { return 0.5 * (lo + hi); }
+  bool contains(Point3 p) const {
+    return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y && p.z >= lo.z && p.z <= hi.z;
+  }
+};
+
+/// Strongly typed integer id: mixing a patch id with a subdomain id does not compile.
+template <class Tag>
+struct Id {
+  int value = 0;
+  constexpr Id() = default;
+  constexpr explicit Id(int v) : value(v) {}
+  friend constexpr auto operator<=>(const Id&, const Id&) = default;
+};
+
+/// Subdomain (cell C_l of the input complex). Value 0 means "outside the domain".
+using SubdomainId = Id<struct SubdomainTag>;
+/// Surface patch S_k. Ids start at 1.
+using PatchId = Id<struct PatchTag>;
+/// Curve segment L_j. Ids start at 1.
+using CurveId = Id<struct CurveTag>;
+/// Corner q in Q. Ids start at 1.
+using CornerId = Id<struct CornerTag>;
+
+inline constexpr SubdomainId kOutside{0};
+
+/// A scalar field over R^3 (sizing field sigma, or any size criterion).
+/// A constant field is evaluated without an indirect call.
+struct ScalarField {
+  double constant = 0.0;                       ///< used when `field` is empty
+  std::function<double(const Point3&)> field;  ///< optional spatially varying value
+
+  static ScalarField uniform(double v) { return ScalarField{v, {}}; }
+  bool is_uniform() const { return !field; }
+  double operator()(const Point3& p) const { return field ? field(p) : constant; }
+};
+
+}  // namespace rdmesh

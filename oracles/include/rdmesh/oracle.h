@@ -1,0 +1,73 @@
+// The oracle interface: the only way the refinement core sees the geometry.
+//
+// An oracle describes the input complex F = Q u L u S u C of RR-7912 (section 2):
+// subdomains (cells C_l), patches (S_k) separating two subdomains (or a
+// subdomain and the outside), and later curves and corners. Every query is
+// const and must be thread-safe (no hidden mutable state shared between calls).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rdmesh/geometry.h"
+
+namespace rdmesh {
+
+struct SubdomainInfo {
+  SubdomainId id;
+  std::string name;
+};
+
+/// A surface patch S_k: the boundary between subdomains `side_a` < `side_b`
+/// (side_a may be kOutside).
+struct PatchInfo {
+  PatchId id;
+  std::string name;
+  SubdomainId side_a;
+  SubdomainId side_b;
+};
+
+/// A point where a segment crosses a patch.
+struct SurfaceHit {
+  Point3 point;
+  PatchId patch;
+};
+
+class DomainOracle {
+ public:
+  virtual ~DomainOracle() = default;
+
+  /// A box containing the whole domain: locate(p) == kOutside for every p outside it.
+  virtual Box3 bounding_box() const = 0;
+
+  /// Label of the subdomain containing p, kOutside (0) when p is outside the domain.
+  virtual SubdomainId locate(const Point3& p) const = 0;
+
+  /// A crossing of segment [a, b] with a patch. Guarantee: whenever
+  /// locate(a) != locate(b) a hit is returned, its point lies on the segment
+  /// within tolerance() of the patch, and its patch separates two labels met
+  /// along the segment. When locate(a) == locate(b) it may return nullopt even
+  /// if the segment crosses the boundary an even number of times.
+  virtual std::optional<SurfaceHit> intersect(const Point3& a, const Point3& b) const = 0;
+
+  /// All subdomains, ids 1..n in order.
+  virtual std::vector<SubdomainInfo> subdomains() const = 0;
+
+  /// All patches that exist in the domain, ids ascending.
+  virtual std::vector<PatchInfo> patches() const = 0;
+
+  /// Points on `patch` (within tolerance()), at least three on each of its
+  /// connected components (RR-7912 starts with >= 3 points per patch).
+  virtual std::vector<Point3> initial_points(PatchId patch) const = 0;
+
+  /// The point of `patch` closest to p, for p near the patch (a fraction of the
+  /// local feature size away). nullopt when the projection does not converge.
+  /// Used to measure the Hausdorff distance of the output, not by refinement.
+  virtual std::optional<Point3> project(const Point3& p, PatchId patch) const = 0;
+
+  /// Absolute accuracy of the points returned by intersect(), initial_points() and project().
+  virtual double tolerance() const = 0;
+};
+
+}  // namespace rdmesh
