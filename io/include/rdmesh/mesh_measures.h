@@ -1,0 +1,38 @@
+// Reusable geometric and topological measures of tetrahedral meshes.
+//
+// Plain doubles (no exact predicates): these functions measure quality and
+// check topology in reports and tests; they never drive refinement decisions.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "rdmesh/geometry.h"
+
+namespace rdmesh {
+
+/// Euler characteristic V - E + F of a triangle set, counting only the vertices
+/// used by some triangle. Duplicated triangles are counted once each in F.
+/// Example: a closed sphere-like surface gives 2, a torus 0, a disk 1.
+int euler_characteristic(const std::vector<std::array<int, 3>>& triangles);
+
+/// True when every undirected edge of `triangles` is shared by exactly two
+/// triangles (a closed, edge-manifold surface; vertex manifoldness is not checked).
+/// An empty set is manifold.
+bool is_edge_manifold(const std::vector<std::array<int, 3>>& triangles);
+
+/// Signed volume (1/6) det[b-a, c-a, d-a]: positive when (a,b,c,d) is
+/// positively oriented in the TetMesh sense.
+double signed_volume(const Point3& a, const Point3& b, const Point3& c, const Point3& d);
+
+/// The six interior dihedral angles in degrees, at edges ab, ac, ad, bc, bd, cd
+/// in that order. A flat tetrahedron has angles of 0 or 180 degrees; an angle
+/// at an edge whose adjacent face is degenerate (zero area) is reported as 0.
+std::vector<double> dihedral_angles_deg(const Point3& a, const Point3& b, const Point3& c,
+                                        const Point3& d);
+
+/// Circumradius divided by the shortest edge length (sqrt(6)/4 ~ 0.612 for
+/// the regular tetrahedron). +infinity for a flat tetrahedron or a zero-length edge.
+double radius_edge_ratio(const Point3& a, const Point3& b, const Point3& c, const Point3& d);
+
+}  // namespace rdmesh

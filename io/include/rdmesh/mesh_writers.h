@@ -1,0 +1,61 @@
+// Writers for the labelled output mesh: Medit (.mesh), Gmsh 4.1 ASCII (.msh)
+// and VTK XML unstructured grid (.vtu).
+//
+// Every writer emits the same information (DESIGN.md, "Contracts"):
+//   - the vertices at full double precision (shortest round-trip form),
+//   - each tetrahedron with its subdomain id,
+//   - each boundary/interface triangle exactly once, with its patch id,
+//   - the subdomain and patch names where the format can carry them (Gmsh).
+// Output is deterministic: the same TetMesh gives byte-identical files.
+#pragma once
+
+#include <iosfwd>
+#include <string>
+
+#include "rdmesh/tet_mesh.h"
+
+namespace rdmesh {
+
+/// Output formats chosen by file extension.
+enum class MeshFormat {
+  Medit,   ///< `.mesh`, MeshVersionFormatted 2
+  Gmsh41,  ///< `.msh`, Gmsh MSH 4.1 ASCII
+  Vtu,     ///< `.vtu`, VTK XML UnstructuredGrid (ASCII data arrays)
+};
+
+/// The format matching the extension of `path` (`.mesh`, `.msh`, `.vtu`,
+/// case-insensitive).
+/// @throws InputError(path, "unknown output extension ...") for any other extension.
+MeshFormat format_from_path(const std::string& path);
+
+/// Medit `.mesh`: Vertices (ref 0), Tetrahedra (ref = subdomain id),
+/// Triangles (ref = patch id); 1-based indices.
+/// @throws InternalError if `mesh` is inconsistent (index out of range, label
+///         arrays of the wrong size); OutputError if the stream fails.
+void write_medit(const TetMesh& mesh, std::ostream& out);
+
+/// Gmsh MSH 4.1 ASCII: one physical volume (tag = subdomain id) per subdomain,
+/// one physical surface (tag = patch id) per patch, both named; one elementary
+/// entity per physical group with the same tag. All nodes are written in a
+/// single block classified on the first volume entity; elements are grouped by
+/// entity (type 4 tetrahedra, type 2 triangles). Node and element tags are 1-based.
+/// @throws InternalError if `mesh` is inconsistent; OutputError if the stream fails.
+void write_gmsh41(const TetMesh& mesh, std::ostream& out);
+
+/// VTK XML `.vtu` with tetrahedra (VTK type 10) followed by triangles (type 5)
+/// in one UnstructuredGrid. Int32 cell arrays: "subdomain" (0 on triangles) and
+/// "patch" (0 on tetrahedra). Indices are 0-based as VTK requires.
+/// @throws InternalError if `mesh` is inconsistent; OutputError if the stream fails.
+void write_vtu(const TetMesh& mesh, std::ostream& out);
+
+/// Writes `mesh` to `path` in the format given by its extension.
+/// The data goes to a fresh temporary file `path.tmp-XXXXXX` in the same
+/// directory, which is then renamed over `path` (atomic on POSIX): `path` is
+/// either left untouched or fully replaced, and no temporary file is left behind.
+/// @throws InputError for an unknown extension (nothing is created);
+///         OutputError("path: problem") when the file cannot be created,
+///         written or renamed (e.g. missing or read-only directory);
+///         InternalError if `mesh` is inconsistent (the temporary file is removed).
+void write_mesh(const TetMesh& mesh, const std::string& path);
+
+}  // namespace rdmesh

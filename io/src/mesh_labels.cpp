@@ -1,0 +1,107 @@
+#include "mesh_labels.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "rdmesh/errors.h"
+
+namespace rdmesh::io_detail {
+namespace {
+
+template <std::size_t N>
+void check_indices(const std::vector<std::array<int, N>>& elements, std::size_t num_vertices,
+                   const char* what) {
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    for (int v : elements[e]) {
+      if (v < 0 || static_cast<std::size_t>(v) >= num_vertices) {
+        throw InternalError(std::string("TetMesh: ") + what + " " + std::to_string(e) +
+                            " refers to vertex " + std::to_string(v) + " but the mesh has " +
+                            std::to_string(num_vertices) + " vertices");
+      }
+    }
+  }
+}
+
+std::vector<Label> merge_labels(std::map<int, std::string> named, const std::vector<int>& used) {
+  for (int id : used) named.try_emplace(id);
+  std::vector<Label> labels;
+  labels.reserve(named.size());
+  for (auto& [id, name] : named) {
+    if (id > 0) labels.push_back({id, name});  // 0 is "outside", never an element label
+  }
+  return labels;
+}
+
+}  // namespace
+
+void check_mesh(const TetMesh& mesh) {
+  if (mesh.tet_subdomain.size() != mesh.tets.size()) {
+    throw InternalError("TetMesh: " + std::to_string(mesh.tets.size()) + " tets but " +
+                        std::to_string(mesh.tet_subdomain.size()) + " subdomain labels");
+  }
+  if (mesh.triangle_patch.size() != mesh.triangles.size()) {
+    throw InternalError("TetMesh: " + std::to_string(mesh.triangles.size()) + " triangles but " +
+                        std::to_string(mesh.triangle_patch.size()) + " patch labels");
+  }
+  for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+    const Point3& p = mesh.vertices[i];
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+      throw InternalError("TetMesh: vertex " + std::to_string(i) + " has a non-finite coordinate");
+    }
+  }
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+    if (mesh.tet_subdomain[t].value <= 0) {
+      throw InternalError("TetMesh: tet " + std::to_string(t) + " has subdomain id " +
+                          std::to_string(mesh.tet_subdomain[t].value) + " (ids start at 1)");
+    }
+  }
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+    if (mesh.triangle_patch[f].value <= 0) {
+      throw InternalError("TetMesh: triangle " + std::to_string(f) + " has patch id " +
+                          std::to_string(mesh.triangle_patch[f].value) + " (ids start at 1)");
+    }
+  }
+  check_indices(mesh.tets, mesh.vertices.size(), "tet");
+  check_indices(mesh.triangles, mesh.vertices.size(), "triangle");
+}
+
+std::vector<int> tet_label_values(const TetMesh& mesh) {
+  std::vector<int> v;
+  v.reserve(mesh.tet_subdomain.size());
+  for (SubdomainId s : mesh.tet_subdomain) v.push_back(s.value);
+  return v;
+}
+
+std::vector<int> triangle_label_values(const TetMesh& mesh) {
+  std::vector<int> v;
+  v.reserve(mesh.triangle_patch.size());
+  for (PatchId p : mesh.triangle_patch) v.push_back(p.value);
+  return v;
+}
+
+std::vector<Label> subdomain_labels(const TetMesh& mesh) {
+  std::map<int, std::string> named;
+  for (const SubdomainInfo& s : mesh.subdomains) named.emplace(s.id.value, s.name);
+  return merge_labels(std::move(named), tet_label_values(mesh));
+}
+
+std::vector<Label> patch_labels(const TetMesh& mesh) {
+  std::map<int, std::string> named;
+  for (const PatchInfo& p : mesh.patches) named.emplace(p.id.value, p.name);
+  return merge_labels(std::move(named), triangle_label_values(mesh));
+}
+
+std::vector<std::vector<int>> group_by_label(const std::vector<int>& element_labels,
+                                             const std::vector<Label>& labels) {
+  std::vector<std::vector<int>> groups(labels.size());
+  for (std::size_t e = 0; e < element_labels.size(); ++e) {
+    auto it = std::lower_bound(labels.begin(), labels.end(), element_labels[e],
+                               [](const Label& l, int id) { return l.id < id; });
+    // Every used label is in `labels` by construction (subdomain_labels/patch_labels).
+    groups[static_cast<std::size_t>(it - labels.begin())].push_back(static_cast<int>(e));
+  }
+  return groups;
+}
+
+}  // namespace rdmesh::io_detail

@@ -1,0 +1,54 @@
+// Internal helpers shared by the writers and the quality report: mesh
+// validation, the sorted list of labels with their names, number formatting.
+#pragma once
+
+#include <charconv>
+#include <string>
+#include <vector>
+
+#include "rdmesh/tet_mesh.h"
+
+namespace rdmesh::io_detail {
+
+/// Throws InternalError unless the label arrays match the element arrays,
+/// every label is >= 1, every coordinate is finite and every element index
+/// refers to an existing vertex.
+void check_mesh(const TetMesh& mesh);
+
+/// A label (subdomain or patch id) with its name.
+struct Label {
+  int id = 0;
+  std::string name;  ///< empty when the TetMesh lists no name for this id
+};
+
+/// Subdomains listed in mesh.subdomains plus those used by a tet, sorted by id,
+/// without duplicates.
+std::vector<Label> subdomain_labels(const TetMesh& mesh);
+
+/// Patches listed in mesh.patches plus those used by a triangle, sorted by id.
+std::vector<Label> patch_labels(const TetMesh& mesh);
+
+/// Element indices grouped by label: result[k] lists the elements whose label
+/// is labels[k].id, in input order.
+std::vector<std::vector<int>> group_by_label(const std::vector<int>& element_labels,
+                                             const std::vector<Label>& labels);
+
+/// The subdomain ids of the tets / patch ids of the triangles as plain ints.
+std::vector<int> tet_label_values(const TetMesh& mesh);
+std::vector<int> triangle_label_values(const TetMesh& mesh);
+
+/// Appends `v` in the shortest form that reads back to the same double.
+inline void append_double(std::string& s, double v) {
+  char buf[32];
+  auto res = std::to_chars(buf, buf + sizeof buf, v);
+  s.append(buf, res.ptr);
+}
+
+/// Appends an integer in decimal.
+inline void append_int(std::string& s, long long v) {
+  char buf[24];
+  auto res = std::to_chars(buf, buf + sizeof buf, v);
+  s.append(buf, res.ptr);
+}
+
+}  // namespace rdmesh::io_detail

@@ -1,0 +1,89 @@
+// Geometric measures of a tetrahedron and topological checks of triangle sets.
+#include "rdmesh/mesh_measures.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <numbers>
+
+namespace rdmesh {
+namespace {
+
+/// Undirected edge key: (min << 32) | max, with indices reinterpreted as unsigned.
+std::uint64_t edge_key(int a, int b) {
+  auto lo = static_cast<std::uint32_t>(std::min(a, b));
+  auto hi = static_cast<std::uint32_t>(std::max(a, b));
+  return (static_cast<std::uint64_t>(lo) << 32) | hi;
+}
+
+/// The 3 edges of every triangle, sorted (duplicates kept).
+std::vector<std::uint64_t> sorted_edges(const std::vector<std::array<int, 3>>& triangles) {
+  std::vector<std::uint64_t> edges;
+  edges.reserve(3 * triangles.size());
+  for (const auto& t : triangles) {
+    edges.push_back(edge_key(t[0], t[1]));
+    edges.push_back(edge_key(t[1], t[2]));
+    edges.push_back(edge_key(t[2], t[0]));
+  }
+  std::sort(edges.begin(), edges.end());
+  return edges;
+}
+
+/// Angle in degrees between the half-planes bounded by line (p, q) that contain r and s.
+double dihedral_at_edge(const Point3& p, const Point3& q, const Point3& r, const Point3& s) {
+  const Point3 e = q - p;
+  const Point3 n1 = cross(e, r - p);  // normal of face (p, q, r), rotated copy of r's offset
+  const Point3 n2 = cross(e, s - p);
+  const double angle = std::atan2(norm(cross(n1, n2)), dot(n1, n2));
+  return angle * 180.0 / std::numbers::pi;
+}
+
+}  // namespace
+
+int euler_characteristic(const std::vector<std::array<int, 3>>& triangles) {
+  std::vector<int> vertices;
+  vertices.reserve(3 * triangles.size());
+  for (const auto& t : triangles) vertices.insert(vertices.end(), t.begin(), t.end());
+  std::sort(vertices.begin(), vertices.end());
+  const auto num_vertices = std::unique(vertices.begin(), vertices.end()) - vertices.begin();
+  std::vector<std::uint64_t> edges = sorted_edges(triangles);
+  const auto num_edges = std::unique(edges.begin(), edges.end()) - edges.begin();
+  return static_cast<int>(num_vertices - num_edges + static_cast<long>(triangles.size()));
+}
+
+bool is_edge_manifold(const std::vector<std::array<int, 3>>& triangles) {
+  const std::vector<std::uint64_t> edges = sorted_edges(triangles);
+  for (std::size_t i = 0; i < edges.size();) {
+    std::size_t j = i;
+    while (j < edges.size() && edges[j] == edges[i]) ++j;
+    if (j - i != 2) return false;
+    i = j;
+  }
+  return true;
+}
+
+double signed_volume(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
+  return dot(b - a, cross(c - a, d - a)) / 6.0;
+}
+
+std::vector<double> dihedral_angles_deg(const Point3& a, const Point3& b, const Point3& c,
+                                        const Point3& d) {
+  return {dihedral_at_edge(a, b, c, d), dihedral_at_edge(a, c, b, d), dihedral_at_edge(a, d, b, c),
+          dihedral_at_edge(b, c, a, d), dihedral_at_edge(b, d, a, c), dihedral_at_edge(c, d, a, b)};
+}
+
+double radius_edge_ratio(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
+  const Point3 u = b - a, v = c - a, w = d - a;
+  const double det = 2.0 * dot(u, cross(v, w));
+  const double shortest =
+      std::sqrt(std::min({squared_norm(u), squared_norm(v), squared_norm(w), squared_norm(c - b),
+                          squared_norm(d - b), squared_norm(d - c)}));
+  if (det == 0.0 || shortest == 0.0) return std::numeric_limits<double>::infinity();
+  // Circumcentre offset from a: (|u|^2 v x w + |v|^2 w x u + |w|^2 u x v) / det.
+  const Point3 offset =
+      squared_norm(u) * cross(v, w) + squared_norm(v) * cross(w, u) + squared_norm(w) * cross(u, v);
+  return norm(offset) / std::abs(det) / shortest;
+}
+
+}  // namespace rdmesh
