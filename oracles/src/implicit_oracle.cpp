@@ -1,0 +1,244 @@
+// ImplicitOracle: construction, locate, intersect, project.
+// Sampling of the box (patch discovery, initial points) is in implicit_sampling.cpp.
+
+#include "rdmesh/implicit_oracle.h"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <string>
+
+#include "brent.h"
+#include "rdmesh/errors.h"
+
+namespace rdmesh {
+
+namespace {
+
+constexpr std::uint64_t kInBox = std::uint64_t{1} << 63;
+
+bool is_finite(const Point3& p) {
+  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
+
+}  // namespace
+
+ImplicitOracle::ImplicitOracle(Box3 box, std::vector<Function> functions,
+                               std::vector<SubdomainSpec> subdomains,
+                               std::vector<std::string> function_names, Options options)
+    : box_(box),
+      functions_(std::move(functions)),
+      function_names_(std::move(function_names)),
+      options_(options) {
+  const int n = static_cast<int>(functions_.size());
+  if (n == 0) throw InputError("no function given");
+  if (n > kMaxFunctions) {
+    throw InputError("too many functions (" + std::to_string(n) + "), at most " +
+                     std::to_string(kMaxFunctions));
+  }
+  function_names_.resize(n);
+  for (int k = 0; k < n; ++k) {
+    if (function_names_[k].empty()) function_names_[k] = "function_" + std::to_string(k);
+    if (!functions_[k]) throw InputError("function '" + function_names_[k] + "' is empty");
+  }
+  if (!is_finite(box_.lo) || !is_finite(box_.hi) || !(box_.lo.x < box_.hi.x) ||
+      !(box_.lo.y < box_.hi.y) || !(box_.lo.z < box_.hi.z)) {
+    throw InputError("bounding box is empty or not finite (need lo < hi on every axis)");
+  }
+  if (options_.sampling_resolution < 2 || options_.sampling_resolution > 1024) {
+    throw InputError("sampling resolution must be in [2, 1024], got " +
+                     std::to_string(options_.sampling_resolution));
+  }
+  if (subdomains.empty()) {
+    if (n != 1) {
+      throw InputError("a list of subdomains is required when there are " + std::to_string(n) +
+                       " functions");
+    }
+    subdomains.push_back({function_names_[0], {0}, {}});
+  }
+  std::uint64_t used = 0;
+  for (std::size_t i = 0; i < subdomains.size(); ++i) {
+    const SubdomainSpec& spec = subdomains[i];
+    const int id = static_cast<int>(i) + 1;
+    const std::string name = spec.name.empty() ? "subdomain_" + std::to_string(id) : spec.name;
+    if (spec.inside.empty() && spec.outside.empty()) {
+      throw InputError("subdomain '" + name + "' has neither inside nor outside functions");
+    }
+    Rule rule;
+    for (int pass = 0; pass < 2; ++pass) {
+      for (int k : pass == 0 ? spec.inside : spec.outside) {
+        if (k < 0 || k >= n) {
+          throw InputError("subdomain '" + name + "' refers to function index " +
+                           std::to_string(k) + ", valid indices are 0.." + std::to_string(n - 1));
+        }
+        (pass == 0 ? rule.inside : rule.outside) |= std::uint64_t{1} << k;
+      }
+    }
+    used |= rule.inside | rule.outside;
+    rules_.push_back(rule);
+    subdomain_infos_.push_back({SubdomainId(id), name});
+  }
+  for (int k = 0; k < n; ++k) {
+    if (used & (std::uint64_t{1} << k)) used_.push_back(k);
+  }
+  tolerance_ = 1e-10 * box_.diagonal();
+  sample_box();
+}
+
+std::uint64_t ImplicitOracle::state_at(const Point3& p, double* values) const {
+  std::uint64_t state = box_.contains(p) ? kInBox : 0;
+  for (int k : used_) {
+    const double v = functions_[k](p);
+    values[k] = v;
+    if (v < 0) state |= std::uint64_t{1} << k;
+  }
+  return state;
+}
+
+int ImplicitOracle::label_of(std::uint64_t state) const {
+  if (!(state & kInBox)) return 0;
+  for (std::size_t i = 0; i < rules_.size(); ++i) {
+    if ((rules_[i].inside & ~state) == 0 && (rules_[i].outside & state) == 0) {
+      return static_cast<int>(i) + 1;
+    }
+  }
+  return 0;
+}
+
+SubdomainId ImplicitOracle::locate(const Point3& p) const {
+  if (!box_.contains(p)) return kOutside;
+  std::array<double, 64> values;
+  return SubdomainId(label_of(state_at(p, values.data())));
+}
+
+PatchId ImplicitOracle::patch_between(SubdomainId sa, SubdomainId sb) const {
+  int a = std::min(sa.value, sb.value), b = std::max(sa.value, sb.value);
+  const int n = static_cast<int>(rules_.size());
+  if (a == b || a < 0 || b > n) throw OracleError("no patch between labels " +
+                                                  std::to_string(a) + " and " + std::to_string(b));
+  // Pairs (i, j), i < j <= n, ranked lexicographically: row i holds n - i pairs.
+  const int rank = a * n - a * (a - 1) / 2 + (b - a - 1);
+  return PatchId(rank + 1);
+}
+
+std::optional<SurfaceHit> ImplicitOracle::intersect(const Point3& a, const Point3& b) const {
+  std::array<double, 64> vs, vt, vm;
+  std::uint64_t ss = state_at(a, vs.data());
+  std::uint64_t st = state_at(b, vt.data());
+  int ls = label_of(ss), lt = label_of(st);
+  if (ls == lt) return std::nullopt;
+  const Point3 dir = b - a;
+  const double length = norm(dir);
+  double ts = 0, tt = 1;
+  const double xtol = length > 0 ? tolerance_ / length : 1.0;
+  // Bisection on labels until a single function changes sign in [ts, tt].
+  for (int iteration = 0; iteration < 200; ++iteration) {
+    const std::uint64_t diff = ss ^ st;
+    if (std::has_single_bit(diff) && !(diff & kInBox)) {
+      const int k = std::countr_zero(diff);
+      const Function& f = functions_[k];
+      auto g = [&](double t) { return f(a + t * dir); };
+      const detail::Transition tr = detail::brent_transition(g, ts, vs[k], tt, vt[k], xtol);
+      const std::uint64_t bit = std::uint64_t{1} << k;
+      const std::uint64_t s_best = tr.g_best < 0 ? (ss | bit) : (ss & ~bit);
+      const std::uint64_t s_other = tr.g_other < 0 ? (ss | bit) : (ss & ~bit);
+      return SurfaceHit{a + tr.best * dir,
+                        patch_between(SubdomainId(label_of(s_best)),
+                                      SubdomainId(label_of(s_other)))};
+    }
+    if ((tt - ts) <= xtol) break;
+    const double tm = 0.5 * (ts + tt);
+    const std::uint64_t sm = state_at(a + tm * dir, vm.data());
+    const int lm = label_of(sm);
+    if (lm != ls) {
+      tt = tm, st = sm, lt = lm;
+      for (int k : used_) vt[k] = vm[k];
+    } else {
+      ts = tm, ss = sm, ls = lm;
+      for (int k : used_) vs[k] = vm[k];
+    }
+  }
+  // Several signs change within tolerance (e.g. at the box or a junction of functions).
+  return SurfaceHit{a + (0.5 * (ts + tt)) * dir,
+                    patch_between(SubdomainId(ls), SubdomainId(lt))};
+}
+
+std::vector<Point3> ImplicitOracle::initial_points(PatchId patch) const {
+  if (patch.value <= 0 || patch.value >= static_cast<int>(initial_points_.size())) return {};
+  return initial_points_[patch.value];
+}
+
+Point3 ImplicitOracle::gradient(int k, const Point3& p) const {
+  const double h = 1e-6 * box_.diagonal();
+  const Function& f = functions_[k];
+  return {(f({p.x + h, p.y, p.z}) - f({p.x - h, p.y, p.z})) / (2 * h),
+          (f({p.x, p.y + h, p.z}) - f({p.x, p.y - h, p.z})) / (2 * h),
+          (f({p.x, p.y, p.z + h}) - f({p.x, p.y, p.z - h})) / (2 * h)};
+}
+
+std::optional<Point3> ImplicitOracle::project_on_function(const Point3& p, int k, int a,
+                                                          int b) const {
+  const Function& f = functions_[k];
+  const double max_step = 0.25 * box_.diagonal();
+  // Newton along the gradient onto the zero set of f, from r.
+  auto newton = [&](Point3 q) -> std::optional<Point3> {
+    for (int it = 0; it < 60; ++it) {
+      const double v = f(q);
+      const Point3 g = gradient(k, q);
+      const double gg = squared_norm(g);
+      if (!(gg > 0) || !std::isfinite(v)) return std::nullopt;
+      Point3 step = (v / gg) * g;
+      const double len = norm(step);
+      if (len > max_step) step = (max_step / len) * step;
+      q = q - step;
+      if (len <= 0.05 * tolerance_) return q;
+    }
+    return std::nullopt;
+  };
+  std::optional<Point3> q = newton(p);
+  // Foot-point iteration: project p on the tangent plane at q, back onto the surface.
+  for (int it = 0; q && it < 200; ++it) {
+    Point3 n = gradient(k, *q);
+    const double nn = norm(n);
+    if (!(nn > 0)) return std::nullopt;
+    n = (1 / nn) * n;
+    const Point3 r = p - dot(p - *q, n) * n;
+    std::optional<Point3> next = newton(r);
+    if (!next) return std::nullopt;
+    const double moved = distance(*next, *q);
+    q = next;
+    if (moved <= tolerance_) break;
+  }
+  if (!q || !box_.contains(*q)) return std::nullopt;
+  // Verify: the labels on both sides along the normal are the patch's sides.
+  Point3 n = gradient(k, *q);
+  const double nn = norm(n);
+  if (!(nn > 0)) return std::nullopt;
+  const double probe = 100 * tolerance_ / nn;
+  const int l1 = locate(*q - probe * n).value, l2 = locate(*q + probe * n).value;
+  if (std::min(l1, l2) != a || std::max(l1, l2) != b) return std::nullopt;
+  return q;
+}
+
+std::optional<Point3> ImplicitOracle::project(const Point3& p, PatchId patch) const {
+  const int n = static_cast<int>(rules_.size());
+  int a = -1, b = -1;
+  for (int i = 0; i <= n && a < 0; ++i) {
+    for (int j = i + 1; j <= n; ++j) {
+      if (patch_between(SubdomainId(i), SubdomainId(j)) == patch) {
+        a = i, b = j;
+        break;
+      }
+    }
+  }
+  if (a < 0 || !is_finite(p)) return std::nullopt;
+  std::optional<Point3> best;
+  for (int k : used_) {
+    const std::optional<Point3> q = project_on_function(p, k, a, b);
+    if (q && (!best || distance(*q, p) < distance(*best, p))) best = q;
+  }
+  return best;
+}
+
+}  // namespace rdmesh

@@ -1,0 +1,211 @@
+// ImplicitOracle::sample_box: discovers the patches, their connected components
+// and initial points on a regular grid over the bounding box.
+//
+// 1. Label every grid node with locate().
+// 2. Every grid edge whose end labels differ is a crossing: intersect() on it
+//    gives a point and the patch actually crossed.
+// 3. Two crossings of the same patch on edges of a common grid cell belong to
+//    the same connected component (union-find), as in marching cubes.
+// 4. Each component contributes up to kPointsPerComponent crossings chosen by
+//    farthest-point sampling (spread out, deterministic). A component with fewer
+//    than three crossings (smaller than a grid cell) is enriched with crossings
+//    of grid-parallel segments shifted by fractions of a cell.
+
+#include <algorithm>
+#include <limits>
+#include <numeric>
+#include <string>
+
+#include "rdmesh/errors.h"
+#include "rdmesh/implicit_oracle.h"
+
+namespace rdmesh {
+
+namespace {
+
+constexpr int kPointsPerComponent = 8;
+constexpr int kMinPointsPerComponent = 3;
+
+struct Crossing {
+  int edge;  // 3 * lower node + axis
+  Point3 point;
+  int patch;
+};
+
+class UnionFind {
+ public:
+  explicit UnionFind(int n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
+  int find(int i) {
+    while (parent_[i] != i) i = parent_[i] = parent_[parent_[i]];
+    return i;
+  }
+  void unite(int i, int j) {
+    i = find(i), j = find(j);
+    if (i != j) parent_[std::max(i, j)] = std::min(i, j);
+  }
+
+ private:
+  std::vector<int> parent_;
+};
+
+/// Indices of up to `count` crossings of `members`, spread by farthest-point sampling.
+std::vector<int> spread(const std::vector<Crossing>& crossings, const std::vector<int>& members,
+                        int count) {
+  std::vector<int> chosen{members.front()};
+  std::vector<double> dist(members.size(), std::numeric_limits<double>::infinity());
+  while (static_cast<int>(chosen.size()) < std::min<int>(count, members.size())) {
+    const Point3 last = crossings[chosen.back()].point;
+    std::size_t far = 0;
+    for (std::size_t m = 0; m < members.size(); ++m) {
+      dist[m] = std::min(dist[m], distance(crossings[members[m]].point, last));
+      if (dist[m] > dist[far]) far = m;
+    }
+    if (!(dist[far] > 0)) break;
+    chosen.push_back(members[far]);
+  }
+  return chosen;
+}
+
+}  // namespace
+
+void ImplicitOracle::sample_box() {
+  const int cells = options_.sampling_resolution;
+  const int m = cells + 1;
+  const int n_sub = static_cast<int>(rules_.size());
+  auto coordinate = [cells](double lo, double hi, int i) {
+    return i == cells ? hi : lo + (hi - lo) * i / cells;
+  };
+  auto node_point = [&](int i, int j, int k) {
+    return Point3{coordinate(box_.lo.x, box_.hi.x, i), coordinate(box_.lo.y, box_.hi.y, j),
+                  coordinate(box_.lo.z, box_.hi.z, k)};
+  };
+  auto node_index = [m](int i, int j, int k) { return i + m * (j + m * k); };
+
+  std::vector<int> labels(static_cast<std::size_t>(m) * m * m);
+  std::vector<int> count(n_sub + 1, 0);
+  for (int k = 0; k < m; ++k) {
+    for (int j = 0; j < m; ++j) {
+      for (int i = 0; i < m; ++i) {
+        const int l = locate(node_point(i, j, k)).value;
+        labels[node_index(i, j, k)] = l;
+        ++count[l];
+      }
+    }
+  }
+  for (int s = 1; s <= n_sub; ++s) {
+    if (count[s] == 0) {
+      throw InputError("subdomain '" + subdomain_infos_[s - 1].name +
+                       "' matches no point of the box (sampled on a grid of " +
+                       std::to_string(cells) + " cells per axis)");
+    }
+  }
+
+  // Crossings on grid edges.
+  std::vector<Crossing> crossings;
+  std::vector<int> edge_slot(labels.size() * 3, -1);
+  for (int k = 0; k < m; ++k) {
+    for (int j = 0; j < m; ++j) {
+      for (int i = 0; i < m; ++i) {
+        const int from = node_index(i, j, k);
+        const int ni[3] = {i + 1, i, i}, nj[3] = {j, j + 1, j}, nk[3] = {k, k, k + 1};
+        for (int axis = 0; axis < 3; ++axis) {
+          if (ni[axis] > cells || nj[axis] > cells || nk[axis] > cells) continue;
+          if (labels[from] == labels[node_index(ni[axis], nj[axis], nk[axis])]) continue;
+          const auto hit =
+              intersect(node_point(i, j, k), node_point(ni[axis], nj[axis], nk[axis]));
+          if (!hit) throw InternalError("implicit oracle: no crossing on a grid edge");
+          edge_slot[3 * from + axis] = static_cast<int>(crossings.size());
+          crossings.push_back({3 * from + axis, hit->point, hit->patch.value});
+        }
+      }
+    }
+  }
+
+  // Connected components: crossings of one patch on edges of a common cell.
+  UnionFind components(static_cast<int>(crossings.size()));
+  for (int k = 0; k < cells; ++k) {
+    for (int j = 0; j < cells; ++j) {
+      for (int i = 0; i < cells; ++i) {
+        int first_of_patch[12][2];
+        int found = 0;
+        for (int e = 0; e < 12; ++e) {
+          const int axis = e / 4, d1 = e & 1, d2 = (e >> 1) & 1;
+          const int node = axis == 0   ? node_index(i, j + d1, k + d2)
+                           : axis == 1 ? node_index(i + d1, j, k + d2)
+                                       : node_index(i + d1, j + d2, k);
+          const int slot = edge_slot[3 * node + axis];
+          if (slot < 0) continue;
+          int f = 0;
+          while (f < found && first_of_patch[f][0] != crossings[slot].patch) ++f;
+          if (f == found) {
+            first_of_patch[found][0] = crossings[slot].patch;
+            first_of_patch[found++][1] = slot;
+          } else {
+            components.unite(first_of_patch[f][1], slot);
+          }
+        }
+      }
+    }
+  }
+
+  // Members of each component, components in order of their first crossing.
+  std::vector<std::vector<int>> members;
+  std::vector<int> component_of_root(crossings.size(), -1);
+  for (int c = 0; c < static_cast<int>(crossings.size()); ++c) {
+    int& comp = component_of_root[components.find(c)];
+    if (comp < 0) {
+      comp = static_cast<int>(members.size());
+      members.emplace_back();
+    }
+    members[comp].push_back(c);
+  }
+
+  const int n_pairs = n_sub * (n_sub + 1) / 2;
+  initial_points_.assign(n_pairs + 1, {});
+  const Point3 spacing = (1.0 / cells) * (box_.hi - box_.lo);
+  for (const std::vector<int>& comp : members) {
+    const int patch = crossings[comp.front()].patch;
+    std::vector<Point3>& out = initial_points_[patch];
+    std::vector<Point3> points;
+    for (int c : spread(crossings, comp, kPointsPerComponent)) points.push_back(crossings[c].point);
+    // Enrich components smaller than a cell with crossings of shifted grid edges.
+    for (double fraction : {0.25, 0.125, 0.0625, 0.03125}) {
+      for (std::size_t c = 0; c < comp.size(); ++c) {
+        if (static_cast<int>(points.size()) >= kMinPointsPerComponent + 1) break;
+        const int node = crossings[comp[c]].edge / 3, axis = crossings[comp[c]].edge % 3;
+        const Point3 p0 = node_point(node % m, (node / m) % m, node / (m * m));
+        const Point3 along = axis == 0 ? Point3{spacing.x, 0, 0}
+                             : axis == 1 ? Point3{0, spacing.y, 0}
+                                         : Point3{0, 0, spacing.z};
+        for (int shift = 0; shift < 4; ++shift) {
+          const int other = (axis + 1 + shift / 2) % 3;
+          Point3 offset;
+          (other == 0 ? offset.x : other == 1 ? offset.y : offset.z) =
+              (shift % 2 ? -fraction : fraction) *
+              (other == 0 ? spacing.x : other == 1 ? spacing.y : spacing.z);
+          const auto hit = intersect(p0 + offset, p0 + along + offset);
+          if (!hit || hit->patch.value != patch) continue;
+          bool fresh = true;
+          for (const Point3& q : points) fresh = fresh && distance(q, hit->point) > 1e3 * tolerance_;
+          if (fresh) points.push_back(hit->point);
+        }
+      }
+    }
+    out.insert(out.end(), points.begin(), points.end());
+  }
+
+  for (int id = 1; id <= n_pairs; ++id) {
+    if (initial_points_[id].empty()) continue;
+    for (int a = 0; a <= n_sub; ++a) {
+      for (int b = a + 1; b <= n_sub; ++b) {
+        if (patch_between(SubdomainId(a), SubdomainId(b)).value != id) continue;
+        const std::string name_a = a == 0 ? "outside" : subdomain_infos_[a - 1].name;
+        patches_.push_back(
+            {PatchId(id), name_a + "/" + subdomain_infos_[b - 1].name, SubdomainId(a),
+             SubdomainId(b)});
+      }
+    }
+  }
+}
+
+}  // namespace rdmesh
