@@ -1,0 +1,66 @@
+// Private to core/: the CGAL triangulation D(P) and the per-simplex data of
+// the restricted complex. Only the core's .cpp files include this header, so
+// CGAL's templates are instantiated in a handful of translation units.
+#pragma once
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Regular_triangulation_3.h>
+#include <CGAL/Regular_triangulation_cell_base_3.h>
+#include <CGAL/Regular_triangulation_vertex_base_3.h>
+#include <CGAL/Triangulation_cell_base_with_info_3.h>
+#include <CGAL/Triangulation_vertex_base_with_info_3.h>
+
+#include <array>
+#include <cstdint>
+
+#include "rdmesh/geometry.h"
+
+namespace rdmesh::detail {
+
+/// Dimension of the input feature a sample point lies on (RR-7912: F_0..F_3).
+enum class FeatureDim : std::int8_t { kCorner = 0, kCurve = 1, kPatch = 2, kVolume = 3 };
+
+/// Per vertex: on which feature it was inserted (refine-facet inserts on a
+/// patch, refine-tet in the volume). Rule R3 reads it.
+struct VertexInfo {
+  FeatureDim dim = FeatureDim::kVolume;
+  int feature = 0;  ///< PatchId value when dim == kPatch
+  int index = -1;   ///< scratch: output index during extraction
+};
+
+/// Per cell: its Delaunay ball, its label in D|O, and the restricted status
+/// of its four facets in D|S. A facet is seen from both incident cells and
+/// both copies are always written together (see Refiner::update_facet).
+struct CellInfo {
+  /// Creation stamp, unique over the run; 0 for a cell that was destroyed or
+  /// not yet initialized. Queue entries carry the stamp they saw (CGAL
+  /// reuses the memory of destroyed cells).
+  std::uint32_t stamp = 0;
+  int label = 0;                ///< SubdomainId of the circumcenter (0 outside, infinite cells)
+  Point3 circumcenter;          ///< finite cells only
+  double squared_radius = 0.0;  ///< finite cells only
+  std::array<int, 4> facet_patch{};          ///< PatchId value of facet i, 0 = not restricted
+  std::array<Point3, 4> surface_center{};    ///< center of facet i's surface Delaunay ball
+};
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Vb = CGAL::Triangulation_vertex_base_with_info_3<VertexInfo, Kernel,
+                                                        CGAL::Regular_triangulation_vertex_base_3<Kernel>>;
+using Cb = CGAL::Triangulation_cell_base_with_info_3<
+    CellInfo, Kernel,
+    CGAL::Regular_triangulation_cell_base_3<Kernel, CGAL::Triangulation_cell_base_3<Kernel>,
+                                            CGAL::Discard_hidden_points>>;
+using Tds = CGAL::Triangulation_data_structure_3<Vb, Cb, CGAL::Sequential_tag>;
+using Triangulation = CGAL::Regular_triangulation_3<Kernel, Tds>;
+using Cell_handle = Triangulation::Cell_handle;
+using Vertex_handle = Triangulation::Vertex_handle;
+using Weighted_point = Triangulation::Weighted_point;
+
+inline Point3 to_point3(const Weighted_point& p) {
+  return {p.x(), p.y(), p.z()};
+}
+inline Weighted_point to_weighted(const Point3& p) {
+  return Weighted_point(Kernel::Point_3(p.x, p.y, p.z), 0.0);
+}
+
+}  // namespace rdmesh::detail
