@@ -1,0 +1,51 @@
+// The implicit domain file (.json): functions, subdomains and criteria hints.
+//
+// Schema (every key not listed here is an error; // and /* */ comments are allowed):
+//   "description": string, optional, ignored (a human note about the domain).
+//   "bbox": [xmin, ymin, zmin, xmax, ymax, zmax], required, min < max on each axis.
+//   "functions": { "name": "expression of x, y, z", ... }, required, non-empty;
+//       each function is negative inside (syntax: rdmesh/expression.h).
+//   "subdomains": [ { "name": string (optional), "inside": [function names],
+//       "outside": [function names] }, ... ], optional when there is exactly one
+//       function (its inside is subdomain 1). A subdomain is where its inside
+//       functions are < 0 and its outside functions >= 0; the first match wins.
+//       "inside"/"outside" may also be a single name string.
+//   "curves": reserved for sharp features; only an empty list is accepted for now.
+//   Criteria hints (defaults that command-line options override):
+//   "size", "facet_size", "cell_size": positive number, or expression of x, y, z
+//       that must be positive and finite at the box center;
+//   "facet_distance", "radius_edge": positive finite numbers;
+//   "facet_angle": degrees, in (0, 60).
+//
+// Every error is an InputError whose what() is one line "ORIGIN: problem".
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "rdmesh/geometry.h"
+#include "rdmesh/oracle.h"
+
+namespace rdmesh {
+
+/// Criteria keys found in the file; absent keys are nullopt.
+struct CriteriaHints {
+  std::optional<ScalarField> size, facet_size, cell_size;  ///< constant or expression of x,y,z
+  std::optional<double> facet_distance, facet_angle, radius_edge;
+};
+
+struct LoadedDomain {
+  std::unique_ptr<DomainOracle> oracle;  ///< an ImplicitOracle
+  CriteriaHints hints;
+};
+
+/// Reads and parses the file at `path` (messages are prefixed with `path`).
+/// Throws InputError when the file cannot be read or is invalid.
+LoadedDomain load_domain_file(const std::string& path);
+
+/// Parses the JSON `text`; `origin` (usually the file name) prefixes every message.
+/// Throws InputError.
+LoadedDomain parse_domain_json(const std::string& text, const std::string& origin);
+
+}  // namespace rdmesh

@@ -1,0 +1,262 @@
+// Parsing of the implicit domain file (.json). Schema: rdmesh/domain_file.h.
+#include "rdmesh/domain_file.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "rdmesh/errors.h"
+#include "rdmesh/expression.h"
+#include "rdmesh/implicit_oracle.h"
+
+namespace rdmesh {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+constexpr const char* kTopKeys[] = {"description", "bbox",        "functions",      "subdomains",
+                                    "curves",      "size",        "facet_size",     "cell_size",
+                                    "facet_distance", "facet_angle", "radius_edge"};
+constexpr const char* kSubdomainKeys[] = {"name", "inside", "outside"};
+
+std::string one_line(std::string s) {
+  for (char& c : s) {
+    if (c == '\n' || c == '\r') c = ' ';
+  }
+  return s;
+}
+
+std::string number_text(double v) {
+  std::ostringstream s;
+  s.precision(17);
+  s << v;
+  return s.str();
+}
+
+/// Reads one document; throws with the context of every problem.
+class Parser {
+ public:
+  explicit Parser(std::string origin) : origin_(std::move(origin)) {}
+
+  LoadedDomain parse(const std::string& text) {
+    const Json doc = parse_json(text);
+    if (!doc.is_object()) fail("the top level must be a JSON object");
+    check_keys(doc, std::begin(kTopKeys), std::end(kTopKeys), "at the top level");
+    if (doc.contains("description") && !doc["description"].is_string()) {
+      fail("'description' must be a string");
+    }
+    if (doc.contains("curves") &&
+        !(doc["curves"].is_array() && doc["curves"].empty())) {
+      fail("curves are not supported yet (sharp features come in a later version)");
+    }
+    const Box3 box = parse_bbox(doc);
+    parse_functions(doc);
+    std::vector<ImplicitOracle::SubdomainSpec> subdomains = parse_subdomains(doc);
+    LoadedDomain result;
+    result.hints = parse_hints(doc, box.center());
+    try {
+      result.oracle =
+          std::make_unique<ImplicitOracle>(box, functions_, std::move(subdomains), names_);
+    } catch (const InputError& e) {
+      fail(e.what());
+    }
+    return result;
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& problem) const {
+    throw InputError(origin_, one_line(problem));
+  }
+
+  Json parse_json(const std::string& text) const {
+    try {
+      return Json::parse(text, nullptr, /*allow_exceptions=*/true, /*ignore_comments=*/true);
+    } catch (const Json::exception& e) {
+      std::string message = e.what();  // "[json.exception.parse_error.101] parse error at ..."
+      const std::size_t bracket = message.find("] ");
+      if (message.rfind("[json.exception", 0) == 0 && bracket != std::string::npos) {
+        message = message.substr(bracket + 2);
+      }
+      fail("malformed JSON: " + message);
+    }
+  }
+
+  template <class It>
+  void check_keys(const Json& object, It begin, It end, const std::string& where) const {
+    for (const auto& item : object.items()) {
+      if (std::find(begin, end, item.key()) != end) continue;
+      std::string expected;
+      for (It k = begin; k != end; ++k) expected += std::string(expected.empty() ? "" : ", ") + *k;
+      fail("unknown key '" + item.key() + "' " + where + " (expected: " + expected + ")");
+    }
+  }
+
+  Box3 parse_bbox(const Json& doc) const {
+    if (!doc.contains("bbox")) fail("missing 'bbox' [xmin, ymin, zmin, xmax, ymax, zmax]");
+    const Json& b = doc["bbox"];
+    if (!b.is_array() || b.size() != 6) {
+      fail("'bbox' must be an array of 6 numbers [xmin, ymin, zmin, xmax, ymax, zmax]");
+    }
+    double v[6];
+    for (int i = 0; i < 6; ++i) {
+      if (!b[i].is_number()) fail("'bbox' entry " + std::to_string(i) + " is not a number");
+      v[i] = b[i].get<double>();
+      if (!std::isfinite(v[i])) fail("'bbox' entry " + std::to_string(i) + " is not finite");
+    }
+    const char* axis = "xyz";
+    for (int i = 0; i < 3; ++i) {
+      if (!(v[i] < v[i + 3])) {
+        fail(std::string("'bbox' is empty along ") + axis[i] + ": " + axis[i] + "min " +
+             number_text(v[i]) + " >= " + axis[i] + "max " + number_text(v[i + 3]));
+      }
+    }
+    return {{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
+  }
+
+  void parse_functions(const Json& doc) {
+    if (!doc.contains("functions")) fail("missing 'functions' {\"name\": \"expression\", ...}");
+    const Json& fs = doc["functions"];
+    if (!fs.is_object() || fs.empty()) {
+      fail("'functions' must be a non-empty object {\"name\": \"expression\", ...}");
+    }
+    for (const auto& item : fs.items()) {
+      const std::string name = item.key();
+      if (!item.value().is_string()) fail("function '" + name + "' must be an expression string");
+      try {
+        functions_.push_back(Expression(item.value().get<std::string>()));
+      } catch (const InputError& e) {
+        fail("function '" + name + "': " + e.what());
+      }
+      names_.push_back(name);
+    }
+  }
+
+  int function_index(const std::string& name, const std::string& subdomain,
+                     const char* list) const {
+    for (std::size_t k = 0; k < names_.size(); ++k) {
+      if (names_[k] == name) return static_cast<int>(k);
+    }
+    std::string known;
+    for (const std::string& n : names_) known += (known.empty() ? "" : ", ") + n;
+    fail("subdomain '" + subdomain + "': unknown function '" + name + "' in '" + list +
+         "' (functions: " + known + ")");
+  }
+
+  std::vector<int> function_list(const Json& s, const char* list, const std::string& sub) const {
+    std::vector<int> out;
+    if (!s.contains(list)) return out;
+    const Json& v = s[list];
+    if (v.is_string()) return {function_index(v.get<std::string>(), sub, list)};
+    if (!v.is_array()) fail("subdomain '" + sub + "': '" + list + "' must be a list of names");
+    for (const Json& name : v) {
+      if (!name.is_string()) {
+        fail("subdomain '" + sub + "': '" + list + "' must be a list of function names");
+      }
+      out.push_back(function_index(name.get<std::string>(), sub, list));
+    }
+    return out;
+  }
+
+  std::vector<ImplicitOracle::SubdomainSpec> parse_subdomains(const Json& doc) const {
+    std::vector<ImplicitOracle::SubdomainSpec> out;
+    if (!doc.contains("subdomains")) {
+      if (names_.size() != 1) {
+        fail("'subdomains' is required when there are several functions (" +
+             std::to_string(names_.size()) + " given)");
+      }
+      return out;
+    }
+    const Json& subs = doc["subdomains"];
+    if (!subs.is_array() || subs.empty()) fail("'subdomains' must be a non-empty list");
+    for (std::size_t i = 0; i < subs.size(); ++i) {
+      const Json& s = subs[i];
+      std::string label = "subdomain_" + std::to_string(i + 1);
+      if (!s.is_object()) fail("subdomain " + std::to_string(i + 1) + " must be an object");
+      if (s.contains("name")) {
+        if (!s["name"].is_string() || s["name"].get<std::string>().empty()) {
+          fail("subdomain " + std::to_string(i + 1) + ": 'name' must be a non-empty string");
+        }
+        label = s["name"].get<std::string>();
+      }
+      check_keys(s, std::begin(kSubdomainKeys), std::end(kSubdomainKeys),
+                 "in subdomain '" + label + "'");
+      out.push_back(
+          {label, function_list(s, "inside", label), function_list(s, "outside", label)});
+    }
+    return out;
+  }
+
+  std::optional<double> positive_number(const Json& doc, const char* key, double max) const {
+    if (!doc.contains(key)) return std::nullopt;
+    const Json& v = doc[key];
+    if (!v.is_number()) fail(std::string("'") + key + "' must be a number");
+    const double d = v.get<double>();
+    if (!std::isfinite(d) || !(d > 0) || !(d < max)) {
+      fail(std::string("'") + key + "' must be a positive finite number" +
+           (std::isinf(max) ? "" : " below " + number_text(max)) + ", got " + number_text(d));
+    }
+    return d;
+  }
+
+  std::optional<ScalarField> size_field(const Json& doc, const char* key, Point3 center) const {
+    if (!doc.contains(key)) return std::nullopt;
+    const Json& v = doc[key];
+    if (v.is_number()) return ScalarField::uniform(*positive_number(doc, key, INFINITY));
+    if (!v.is_string()) fail(std::string("'") + key + "' must be a number or an expression");
+    std::optional<Expression> e;
+    try {
+      e.emplace(v.get<std::string>());
+    } catch (const InputError& err) {
+      fail(std::string("'") + key + "': " + err.what());
+    }
+    const double at_center = (*e)(center);
+    if (!std::isfinite(at_center) || !(at_center > 0)) {
+      fail(std::string("'") + key + "' expression '" + e->text() + "' evaluates to " +
+           number_text(at_center) + " at the box center (" + number_text(center.x) + ", " +
+           number_text(center.y) + ", " + number_text(center.z) + "); it must be positive");
+    }
+    return ScalarField{0.0, *e};
+  }
+
+  CriteriaHints parse_hints(const Json& doc, Point3 center) const {
+    CriteriaHints h;
+    h.size = size_field(doc, "size", center);
+    h.facet_size = size_field(doc, "facet_size", center);
+    h.cell_size = size_field(doc, "cell_size", center);
+    h.facet_distance = positive_number(doc, "facet_distance", INFINITY);
+    h.facet_angle = positive_number(doc, "facet_angle", 60.0);
+    h.radius_edge = positive_number(doc, "radius_edge", INFINITY);
+    return h;
+  }
+
+  std::string origin_;
+  std::vector<ImplicitOracle::Function> functions_;
+  std::vector<std::string> names_;
+};
+
+}  // namespace
+
+LoadedDomain parse_domain_json(const std::string& text, const std::string& origin) {
+  return Parser(origin).parse(text);
+}
+
+LoadedDomain load_domain_file(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw InputError(path, "file not found");
+  if (std::filesystem::is_directory(path, ec)) {
+    throw InputError(path, "is a directory, not a domain file");
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, std::string("cannot open file: ") + std::strerror(errno));
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw InputError(path, "cannot read file");
+  return parse_domain_json(text.str(), path);
+}
+
+}  // namespace rdmesh
