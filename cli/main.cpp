@@ -1,0 +1,99 @@
+// rdmesh command line: INPUT [-o OUTPUT] [criteria] [--report FILE.json] [--quiet].
+// Every failure is one line "rdmesh: error: ..." on stderr and a non-zero exit
+// (2 for bad input or an unwritable output); no partial output file is left.
+#include <CLI/CLI.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <optional>
+#include <string>
+
+#include "rdmesh/errors.h"
+#include "rdmesh/mesh_writers.h"
+#include "rdmesh/mesher.h"
+#include "rdmesh/quality_report.h"
+#include "run_setup.h"
+#include "progress_display.h"
+
+namespace {
+
+int fail(int code, const std::string& message) {
+  std::fprintf(stderr, "rdmesh: error: %s\n", message.c_str());
+  return code;
+}
+
+int run(const rdmesh::cli::Options& opt) {
+  using namespace rdmesh;
+  const auto start = std::chrono::steady_clock::now();
+  (void)format_from_path(opt.output);  // unknown extension: fail before meshing
+  cli::check_writable(opt.output);
+  if (!opt.report.empty()) cli::check_writable(opt.report);
+
+  cli::LoadedInput input = cli::load_input(opt.input);
+  const Criteria criteria = cli::resolve_criteria(opt, input);
+  const double seconds_load =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  cli::ProgressDisplay progress(!opt.quiet);
+  MeshOptions mesh_options;
+  mesh_options.progress = [&progress](const Progress& p) { progress(p); };
+  MeshResult result = generate_mesh(*input.oracle, criteria, mesh_options);
+  progress.finish();
+
+  auto t = std::chrono::steady_clock::now();
+  write_mesh(result.mesh, opt.output);
+  const double seconds_write =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+
+  t = std::chrono::steady_clock::now();
+  const QualityReport quality = measure_quality(result.mesh, input.oracle.get());
+  const double seconds_report =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+
+  const cli::RunTimes times{seconds_load, seconds_write, seconds_report};
+  if (!opt.report.empty()) {
+    cli::write_json_report(opt, criteria, result.stats, quality, times);
+  }
+  if (!opt.quiet) {
+    std::cout << format_summary(quality) << cli::format_run_summary(opt, result.stats, times);
+  }
+  if (result.stats.guard_fired()) {
+    std::fprintf(stderr,
+                 "rdmesh: warning: the minimum-size guard refused %zu refinement points; the "
+                 "input may violate the angle hypothesis of RR-7912 (see the report)\n",
+                 result.stats.guard_rejections);
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"rdmesh: tetrahedral meshes of domains bounded by piecewise smooth surfaces"};
+  rdmesh::cli::Options opt;
+  rdmesh::cli::add_options(app, opt);
+  try {
+    app.parse(argc, argv);
+    if (opt.output.empty()) opt.output = rdmesh::cli::default_output_path(opt.input);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    return fail(2, e.what());
+  }
+  try {
+    return run(opt);
+  } catch (const rdmesh::InputError& e) {
+    return fail(2, e.what());
+  } catch (const rdmesh::OutputError& e) {
+    return fail(2, e.what());
+  } catch (const rdmesh::Error& e) {
+    return fail(3, e.what());
+  } catch (const std::bad_alloc&) {
+    return fail(3, "out of memory");
+  } catch (const std::exception& e) {
+    return fail(3, std::string("internal error: ") + e.what());
+  }
+}

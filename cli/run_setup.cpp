@@ -1,0 +1,149 @@
+#include "run_setup.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "rdmesh/atomic_file.h"
+#include "rdmesh/errors.h"
+#include "rdmesh/mesh_writers.h"
+
+namespace rdmesh::cli {
+namespace fs = std::filesystem;
+
+void add_options(CLI::App& app, Options& opt) {
+  app.add_option("input", opt.input, "Domain: .json implicit domain file")->required();
+  app.add_option("-o,--output", opt.output,
+                 "Output mesh: .mesh (Medit), .msh (Gmsh 4.1) or .vtu (VTK); default INPUT-stem.msh");
+  app.add_option("--size", opt.size, "Target size h: facet size = cell size = h, facet distance h/10");
+  app.add_option("--facet-size", opt.facet_size, "Max radius of surface Delaunay balls (R4.1)");
+  app.add_option("--cell-size", opt.cell_size, "Max circumradius of tetrahedra (R5.1)");
+  app.add_option("--facet-distance", opt.facet_distance,
+                 "Max distance between a boundary facet's circumcenter and the surface");
+  app.add_option("--facet-angle", opt.facet_angle, "Min angle of boundary facets, degrees (default 25)");
+  app.add_option("--radius-edge", opt.radius_edge, "Max radius-edge ratio of tetrahedra (default 2)");
+  app.add_option("--min-size", opt.min_size,
+                 "Termination guard: no two vertices closer than this (default 1e-4 of the box diagonal)");
+  app.add_option("--report", opt.report, "Write a JSON report of the run to this file");
+  app.add_flag("-q,--quiet", opt.quiet, "No progress and no summary");
+}
+
+LoadedInput load_input(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (ext == ".json") {
+    LoadedDomain d = load_domain_file(path);
+    return {std::move(d.oracle), std::move(d.hints)};
+  }
+  if (ext == ".step" || ext == ".stp" || ext == ".brep" || ext == ".iges" || ext == ".igs" ||
+      ext == ".off" || ext == ".stl" || ext == ".obj" || ext == ".ply") {
+    throw InputError(path, "input format '" + ext +
+                               "' is not supported by this version of rdmesh (only .json "
+                               "implicit domains are)");
+  }
+  throw InputError(path, "unknown input extension '" + ext + "' (expected .json)");
+}
+
+void check_writable(const std::string& path) {
+  const fs::path dir = fs::path(path).has_parent_path() ? fs::path(path).parent_path() : ".";
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) {
+    throw OutputError(path + ": directory '" + dir.string() + "' does not exist");
+  }
+  if (::access(dir.c_str(), W_OK) != 0) {
+    throw OutputError(path + ": directory '" + dir.string() + "' is not writable");
+  }
+  if (fs::is_directory(path, ec)) throw OutputError(path + ": is a directory");
+}
+
+std::string default_output_path(const std::string& input) {
+  return fs::path(input).stem().string() + ".msh";
+}
+
+Criteria resolve_criteria(const Options& opt, const LoadedInput& input) {
+  Criteria c = default_criteria(input.oracle->bounding_box());
+  const CriteriaHints& h = input.hints;
+  // File hints: size sets both sizes; specific keys refine it.
+  std::optional<ScalarField> size = h.size;
+  if (opt.size) size = ScalarField::uniform(*opt.size);
+  if (size) c.facet_size = c.cell_size = *size;
+  if (h.facet_size && !opt.size) c.facet_size = *h.facet_size;
+  if (h.cell_size && !opt.size) c.cell_size = *h.cell_size;
+  if (opt.facet_size) c.facet_size = ScalarField::uniform(*opt.facet_size);
+  if (opt.cell_size) c.cell_size = ScalarField::uniform(*opt.cell_size);
+  // Facet distance follows the facet size (1/10) unless given.
+  const Point3 center = input.oracle->bounding_box().center();
+  c.facet_distance = 0.1 * c.facet_size(center);
+  if (h.facet_distance) c.facet_distance = *h.facet_distance;
+  if (opt.facet_distance) c.facet_distance = *opt.facet_distance;
+  if (h.facet_angle) c.facet_angle_deg = *h.facet_angle;
+  if (opt.facet_angle) c.facet_angle_deg = *opt.facet_angle;
+  if (h.radius_edge) c.cell_radius_edge = *h.radius_edge;
+  if (opt.radius_edge) c.cell_radius_edge = *opt.radius_edge;
+  if (opt.min_size) c.min_size = *opt.min_size;
+  try {
+    c.validate();
+  } catch (const InputError& e) {
+    throw InputError(opt.input, e.what());
+  }
+  return c;
+}
+
+namespace {
+
+nlohmann::json field_json(const ScalarField& f, const Point3& at) {
+  if (f.is_uniform()) return f.constant;
+  return {{"expression", true}, {"value_at_box_center", f(at)}};
+}
+
+}  // namespace
+
+void write_json_report(const Options& opt, const Criteria& criteria, const RefinementStats& stats,
+                       const QualityReport& quality, const RunTimes& times) {
+  nlohmann::json j = to_json(quality);
+  const Point3 origin{0, 0, 0};
+  j["input"] = opt.input;
+  j["output"] = opt.output;
+  j["criteria"] = {{"facet_size", field_json(criteria.facet_size, origin)},
+                   {"cell_size", field_json(criteria.cell_size, origin)},
+                   {"facet_distance", criteria.facet_distance},
+                   {"facet_angle_deg", criteria.facet_angle_deg},
+                   {"cell_radius_edge", criteria.cell_radius_edge},
+                   {"min_size", criteria.min_size}};
+  j["refinement"] = {{"initial_points", stats.initial_points},
+                     {"facet_centers_inserted", stats.inserted_facet_centers},
+                     {"cell_centers_inserted", stats.inserted_cell_centers},
+                     {"encroachments", stats.encroachments}};
+  j["guard"] = {{"fired", stats.guard_fired()}, {"rejected_points", stats.guard_rejections}};
+  j["seconds"] = {{"load", times.load},
+                  {"initial_points", stats.seconds_initial},
+                  {"refine", stats.seconds_refine},
+                  {"extract", stats.seconds_extract},
+                  {"write", times.write},
+                  {"report", times.report}};
+  write_file_atomically(opt.report, [&](std::ostream& out) { out << j.dump(2) << '\n'; });
+}
+
+std::string format_run_summary(const Options& opt, const RefinementStats& stats,
+                               const RunTimes& times) {
+  std::ostringstream s;
+  s.setf(std::ios::fixed);
+  s.precision(2);
+  s << "refinement: " << stats.initial_points << " initial points, "
+    << stats.inserted_facet_centers << " facet centers, " << stats.inserted_cell_centers
+    << " cell centers, " << stats.encroachments << " encroachments\n";
+  s << "guard: " << (stats.guard_fired() ? "FIRED" : "not fired") << " ("
+    << stats.guard_rejections << " points refused)\n";
+  s << "time: load " << times.load << " s, refine " << stats.seconds_initial + stats.seconds_refine
+    << " s, extract " << stats.seconds_extract << " s, write " << times.write << " s, report "
+    << times.report << " s\n";
+  s << "wrote " << opt.output << (opt.report.empty() ? "" : " and " + opt.report) << '\n';
+  return s.str();
+}
+
+}  // namespace rdmesh::cli

@@ -1,0 +1,61 @@
+// The CLI's pieces between argument parsing and meshing: options, input
+// loading by extension, criteria resolution (bbox defaults < file < options)
+// and the run report.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "rdmesh/criteria.h"
+#include "rdmesh/domain_file.h"
+#include "rdmesh/mesher.h"
+#include "rdmesh/oracle.h"
+#include "rdmesh/quality_report.h"
+
+namespace rdmesh::cli {
+
+struct Options {
+  std::string input;
+  std::string output;  ///< default: the input's stem + ".msh" in the current directory
+  std::optional<double> size, facet_size, cell_size, facet_distance, facet_angle, radius_edge,
+      min_size;
+  std::string report;  ///< JSON report path, empty = none
+  bool quiet = false;
+};
+
+void add_options(CLI::App& app, Options& opt);
+
+/// The input's oracle and the criteria its file suggests.
+struct LoadedInput {
+  std::unique_ptr<DomainOracle> oracle;
+  CriteriaHints hints;
+};
+
+/// Chooses the reader by extension; throws InputError naming the file.
+LoadedInput load_input(const std::string& path);
+
+/// Throws OutputError early (before meshing) when `path` cannot be written.
+void check_writable(const std::string& path);
+
+/// Bounding-box defaults, overridden by the file's hints, overridden by options.
+Criteria resolve_criteria(const Options& opt, const LoadedInput& input);
+
+struct RunTimes {
+  double load = 0, write = 0, report = 0;
+};
+
+void write_json_report(const Options& opt, const Criteria& criteria, const RefinementStats& stats,
+                       const QualityReport& quality, const RunTimes& times);
+
+std::string format_run_summary(const Options& opt, const RefinementStats& stats,
+                               const RunTimes& times);
+
+}  // namespace rdmesh::cli
+
+namespace rdmesh::cli {
+/// INPUT's stem with the .msh extension, in the current directory.
+std::string default_output_path(const std::string& input);
+}  // namespace rdmesh::cli

@@ -1,0 +1,8 @@
+#!/usr/bin/env bash
+# Configures and builds rdmesh into build/ (or $RDMESH_BUILD_DIR) with 2 jobs.
+# Extra arguments go to cmake's configure step (e.g. -DRDMESH_SANITIZE=ON).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+dir=${RDMESH_BUILD_DIR:-build}
+cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
+cmake --build "$dir" -j "${RDMESH_JOBS:-2}"

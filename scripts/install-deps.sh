@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages rdmesh needs to build, test and benchmark.
+# Runs apt-get only for what is missing; uses sudo when not root.
+set -euo pipefail
+packages=(
+  build-essential cmake ccache pkg-config git
+  libcgal-dev libgmp-dev libmpfr-dev libboost-dev libeigen3-dev
+  libmuparser-dev nlohmann-json3-dev libcli11-dev libgtest-dev
+  python3-meshio gmsh   # independent readers used by the round-trip tests
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+sudo=""
+[ "$(id -u)" -eq 0 ] || sudo="sudo"
+echo "rdmesh: installing ${missing[*]}" >&2
+$sudo apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
