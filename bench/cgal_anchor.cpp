@@ -1,0 +1,95 @@
+// CGAL Mesh_3 anchor: make_mesh_3 on the implicit benchmark domains. The only
+// translation unit of rdmesh that instantiates Mesh_3 (compiles slowly).
+#include "cgal_anchor.h"
+
+#include <chrono>
+#include <stdexcept>
+#include <unordered_map>
+#include <vector>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Labeled_mesh_domain_3.h>
+#include <CGAL/Mesh_complex_3_in_triangulation_3.h>
+#include <CGAL/Mesh_criteria_3.h>
+#include <CGAL/Mesh_triangulation_3.h>
+#include <CGAL/Random.h>
+#include <CGAL/make_mesh_3.h>
+#include <CGAL/version_macros.h>
+
+#include "shapes.h"
+#include "tet_quality.h"
+
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = K::Point_3;
+using Mesh_domain = CGAL::Labeled_mesh_domain_3<K>;
+// Sequential on purpose: rdmesh refines sequentially, and the machine is shared.
+using Tr = CGAL::Mesh_triangulation_3<Mesh_domain, CGAL::Default, CGAL::Sequential_tag>::type;
+using C3t3 = CGAL::Mesh_complex_3_in_triangulation_3<Tr>;
+using Mesh_criteria = CGAL::Mesh_criteria_3<Tr>;
+
+}  // namespace
+
+AnchorResult run_cgal_anchor(const std::string& shape_name, double h,
+                             double relative_error_bound) {
+  const rdmesh_bench::Shape* shape = rdmesh_bench::find_shape(shape_name);
+  if (shape == nullptr) throw std::invalid_argument("unknown shape: " + shape_name);
+  const auto f = shape->f;
+  const rdmesh_bench::BenchCriteria bc = rdmesh_bench::bench_criteria(h);
+
+  namespace params = CGAL::parameters;
+  // Fixed seed: the default CGAL::Random is seeded from the clock, which would
+  // make the initial surface points (and the mesh) differ between runs.
+  CGAL::Random rng(0);
+  // Same box as the rdmesh oracle. The relative error bound (default 1e-3:
+  // intersections within 1e-3 / 2 of the box diagonal along the segment)
+  // decides the accuracy of surface points; rdmesh's oracle is far tighter (1e-10).
+  const CGAL::Bbox_3 box(shape->lo[0], shape->lo[1], shape->lo[2], shape->hi[0], shape->hi[1],
+                         shape->hi[2]);
+  Mesh_domain domain = Mesh_domain::create_implicit_mesh_domain(
+      [f](const Point& p) { return f(p.x(), p.y(), p.z()); }, box,
+      params::relative_error_bound = relative_error_bound, params::p_rng = &rng);
+
+  Mesh_criteria criteria(params::facet_angle = bc.facet_angle_deg,
+                         params::facet_size = bc.facet_size,
+                         params::facet_distance = bc.facet_distance,
+                         params::cell_radius_edge_ratio = bc.cell_radius_edge,
+                         params::cell_size = bc.cell_size);
+
+  const auto t0 = std::chrono::steady_clock::now();
+  C3t3 c3t3 = CGAL::make_mesh_3<C3t3>(domain, criteria, params::no_perturb(), params::no_exude());
+  const auto t1 = std::chrono::steady_clock::now();
+
+  // Cells in the complex as plain arrays, for the shared quality helper.
+  std::vector<rdmesh_bench::Vec3> vertices;
+  std::vector<rdmesh_bench::Tet> tets;
+  std::unordered_map<Tr::Vertex_handle, int> index;
+  tets.reserve(c3t3.number_of_cells_in_complex());
+  for (auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
+    rdmesh_bench::Tet t{};
+    for (int i = 0; i < 4; ++i) {
+      const Tr::Vertex_handle v = c->vertex(i);
+      auto [it, inserted] = index.emplace(v, static_cast<int>(vertices.size()));
+      if (inserted) {
+        const auto& p = v->point().point();  // weighted point -> bare point
+        vertices.push_back({p.x(), p.y(), p.z()});
+      }
+      t[i] = it->second;
+    }
+    tets.push_back(t);
+  }
+  const rdmesh_bench::MeshQuality q = rdmesh_bench::mesh_quality(vertices, tets);
+
+  AnchorResult r;
+  r.tets = tets.size();
+  r.vertices = vertices.size();
+  r.seconds = std::chrono::duration<double>(t1 - t0).count();
+  r.min_dihedral_deg = q.min_dihedral_deg;
+  r.max_radius_edge = q.max_radius_edge;
+  r.volume = q.volume;
+  r.non_positive = q.non_positive;
+  return r;
+}
+
+std::string cgal_anchor_version() { return CGAL_VERSION_STR; }

@@ -1,0 +1,372 @@
+// rdmesh vs CGAL Mesh_3: same domains, same criteria, same run. Prints Markdown tables.
+//
+// Each side of each case runs in its own forked child process (unless --no-fork):
+// a crash or a hang of one side (rdmesh is young) is reported in the table
+// instead of ending the run, each side starts from a fresh heap, and the
+// child's peak RSS is that side's own peak memory.
+#include <sys/resource.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <csignal>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <exception>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cgal_anchor.h"
+#include "rdmesh_side.h"
+#include "shapes.h"
+
+namespace {
+
+struct Case {
+  std::string name;
+  std::string shape;
+  double h;
+  bool quick;  ///< part of --quick
+};
+
+const std::vector<Case>& all_cases() {
+  static const std::vector<Case> cases = {
+      {"sphere-0.1", "sphere", 0.1, true},
+      {"sphere-0.05", "sphere", 0.05, false},
+      {"sphere-0.025", "sphere", 0.025, false},
+      {"torus-0.05", "torus", 0.05, true},
+  };
+  return cases;
+}
+
+/// One side's run, in a form that crosses a pipe (trivially copyable).
+struct Wire {
+  int ok = 0;
+  std::uint64_t tets = 0, vertices = 0, non_positive = 0, guard_rejections = 0;
+  double seconds = 0, setup_seconds = 0, min_dihedral_deg = 0, max_radius_edge = 0, volume = 0;
+  char error[400] = {};
+};
+
+struct Outcome {
+  Wire w;
+  std::string error;  ///< empty when ok
+  long peak_rss_kb = -1;  ///< -1 when unknown (--no-fork)
+};
+
+enum class Side { kRdmesh, kCgal };
+
+double g_cgal_relative_error = 1e-3;  // --cgal-relative-error
+
+Wire run_side_inline(Side side, const Case& c) {
+  Wire w;
+  try {
+    if (side == Side::kRdmesh) {
+      const RdmeshResult r = run_rdmesh(c.shape, c.h);
+      w.tets = r.tets;
+      w.vertices = r.vertices;
+      w.seconds = r.seconds;
+      w.setup_seconds = r.setup_seconds;
+      w.min_dihedral_deg = r.min_dihedral_deg;
+      w.max_radius_edge = r.max_radius_edge;
+      w.volume = r.volume;
+      w.non_positive = r.non_positive;
+      w.guard_rejections = r.guard_rejections;
+    } else {
+      const AnchorResult r = run_cgal_anchor(c.shape, c.h, g_cgal_relative_error);
+      w.tets = r.tets;
+      w.vertices = r.vertices;
+      w.seconds = r.seconds;
+      w.min_dihedral_deg = r.min_dihedral_deg;
+      w.max_radius_edge = r.max_radius_edge;
+      w.volume = r.volume;
+      w.non_positive = r.non_positive;
+    }
+    w.ok = 1;
+    if (w.tets == 0) {
+      w.ok = 0;
+      std::snprintf(w.error, sizeof w.error, "empty mesh (0 tetrahedra)");
+    }
+  } catch (const std::exception& e) {
+    std::snprintf(w.error, sizeof w.error, "%s", e.what());
+  } catch (...) {
+    std::snprintf(w.error, sizeof w.error, "unknown exception");
+  }
+  return w;
+}
+
+Outcome run_side(Side side, const Case& c, bool fork_side, int timeout_s) {
+  Outcome out;
+  if (!fork_side) {
+    out.w = run_side_inline(side, c);
+    if (!out.w.ok) out.error = out.w.error;
+    return out;
+  }
+  int fds[2];
+  if (pipe(fds) != 0) {
+    out.error = std::string("pipe: ") + std::strerror(errno);
+    return out;
+  }
+  std::fflush(stdout);
+  std::fflush(stderr);
+  const pid_t pid = fork();
+  if (pid < 0) {
+    out.error = std::string("fork: ") + std::strerror(errno);
+    close(fds[0]);
+    close(fds[1]);
+    return out;
+  }
+  if (pid == 0) {  // child
+    close(fds[0]);
+    if (timeout_s > 0) alarm(static_cast<unsigned>(timeout_s));
+    const Wire w = run_side_inline(side, c);
+    const char* p = reinterpret_cast<const char*>(&w);
+    std::size_t left = sizeof w;
+    while (left > 0) {
+      const ssize_t n = write(fds[1], p, left);
+      if (n <= 0) _exit(3);
+      p += n;
+      left -= static_cast<std::size_t>(n);
+    }
+    close(fds[1]);
+    _exit(0);
+  }
+  close(fds[1]);
+  Wire w;
+  char* p = reinterpret_cast<char*>(&w);
+  std::size_t got = 0;
+  while (got < sizeof w) {
+    const ssize_t n = read(fds[0], p + got, sizeof w - got);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    got += static_cast<std::size_t>(n);
+  }
+  close(fds[0]);
+  int status = 0;
+  struct rusage ru {};
+  while (wait4(pid, &status, 0, &ru) < 0 && errno == EINTR) {
+  }
+  out.peak_rss_kb = ru.ru_maxrss;  // kilobytes on Linux
+  if (WIFSIGNALED(status)) {
+    const int sig = WTERMSIG(status);
+    out.error = sig == SIGALRM ? "timeout after " + std::to_string(timeout_s) + " s"
+                               : "killed by signal " + std::to_string(sig) + " (" +
+                                     strsignal(sig) + ")";
+  } else if (got != sizeof w) {
+    out.error = "child exited with status " + std::to_string(WEXITSTATUS(status));
+  } else {
+    out.w = w;
+    if (!w.ok) out.error = w.error;
+  }
+  return out;
+}
+
+/// The run with the median time among the successful ones (the first failure if none).
+Outcome median_outcome(std::vector<Outcome> runs) {
+  std::vector<Outcome> ok;
+  for (const Outcome& o : runs)
+    if (o.error.empty()) ok.push_back(o);
+  if (ok.empty()) return runs.front();
+  std::sort(ok.begin(), ok.end(),
+            [](const Outcome& a, const Outcome& b) { return a.w.seconds < b.w.seconds; });
+  return ok[(ok.size() - 1) / 2];  // lower median for an even count: an actual run
+}
+
+std::string fmt(const char* format, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, format, v);
+  return buf;
+}
+
+std::string cell_error(const std::string& e) {
+  std::string s = e;
+  std::replace(s.begin(), s.end(), '|', '/');
+  std::replace(s.begin(), s.end(), '\n', ' ');
+  if (s.size() > 80) s = s.substr(0, 77) + "...";
+  return "failed: " + s;
+}
+
+void usage(const char* argv0) {
+  std::fprintf(stderr,
+               "usage: %s [--quick] [--case NAME]... [--repeat N] [--side both|rdmesh|cgal]\n"
+               "          [--timeout SECONDS] [--no-fork] [--cgal-relative-error E]\n"
+               "cases:",
+               argv0);
+  for (const Case& c : all_cases()) std::fprintf(stderr, " %s", c.name.c_str());
+  std::fprintf(stderr, "\n--quick: sphere-0.1 and torus-0.05. Default: all cases, once per side.\n");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  bool quick = false, fork_side = true;
+  int repeat = 1, timeout_s = 1800;
+  std::string sides = "both";
+  std::vector<std::string> selected;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) {
+        usage(argv[0]);
+        std::exit(2);
+      }
+      return argv[++i];
+    };
+    if (a == "--quick") {
+      quick = true;
+    } else if (a == "--case") {
+      selected.push_back(value());
+    } else if (a == "--repeat") {
+      repeat = std::atoi(value().c_str());
+    } else if (a == "--timeout") {
+      timeout_s = std::atoi(value().c_str());
+    } else if (a == "--side") {
+      sides = value();
+    } else if (a == "--cgal-relative-error") {
+      g_cgal_relative_error = std::atof(value().c_str());
+    } else if (a == "--no-fork") {
+      fork_side = false;
+    } else if (a == "-h" || a == "--help") {
+      usage(argv[0]);
+      return 0;
+    } else {
+      std::fprintf(stderr, "unknown argument: %s\n", a.c_str());
+      usage(argv[0]);
+      return 2;
+    }
+  }
+  if (repeat < 1 || !(g_cgal_relative_error > 0) || (sides != "both" && sides != "rdmesh" && sides != "cgal")) {
+    usage(argv[0]);
+    return 2;
+  }
+  std::vector<Case> cases;
+  for (const Case& c : all_cases()) {
+    const bool picked = selected.empty() ? (!quick || c.quick)
+                                         : std::find(selected.begin(), selected.end(), c.name) !=
+                                               selected.end();
+    if (picked) cases.push_back(c);
+  }
+  for (const std::string& s : selected) {
+    if (std::none_of(all_cases().begin(), all_cases().end(),
+                     [&](const Case& c) { return c.name == s; })) {
+      std::fprintf(stderr, "unknown case: %s\n", s.c_str());
+      usage(argv[0]);
+      return 2;
+    }
+  }
+  const bool run_r = sides != "cgal", run_c = sides != "rdmesh";
+
+  struct Row {
+    Case c;
+    std::optional<Outcome> r, cg;
+  };
+  std::vector<Row> rows;
+  for (const Case& c : cases) {
+    std::vector<Outcome> rr, cc;
+    for (int k = 0; k < repeat; ++k) {
+      // Alternate which side goes first, so that neither always meets a warm (or hot) CPU.
+      const bool rdmesh_first = k % 2 == 0;
+      for (int s = 0; s < 2; ++s) {
+        const Side side = (s == 0) == rdmesh_first ? Side::kRdmesh : Side::kCgal;
+        if ((side == Side::kRdmesh && !run_r) || (side == Side::kCgal && !run_c)) continue;
+        std::fprintf(stderr, "[%s] %s run %d/%d ...\n", c.name.c_str(),
+                     side == Side::kRdmesh ? "rdmesh" : "CGAL", k + 1, repeat);
+        Outcome o = run_side(side, c, fork_side, timeout_s);
+        if (o.error.empty())
+          std::fprintf(stderr, "[%s]   %zu tets in %.3f s\n", c.name.c_str(),
+                       static_cast<std::size_t>(o.w.tets), o.w.seconds);
+        else
+          std::fprintf(stderr, "[%s]   %s\n", c.name.c_str(), o.error.c_str());
+        (side == Side::kRdmesh ? rr : cc).push_back(std::move(o));
+      }
+    }
+    Row row{c, {}, {}};
+    if (!rr.empty()) row.r = median_outcome(rr);
+    if (!cc.empty()) row.cg = median_outcome(cc);
+    rows.push_back(std::move(row));
+  }
+
+  std::printf("rdmesh vs CGAL %s Mesh_3 (sequential), criteria: facet angle 25, facet size = cell size = h,\n"
+              "facet distance h/10, cell radius-edge 3, no perturb, no exude; %d run(s) per side, median time;\n"
+              "CGAL relative_error_bound %g.\n\n",
+              cgal_anchor_version().c_str(), repeat, g_cgal_relative_error);
+  std::printf("| case | h | rdmesh tets | rdmesh s | rdmesh tets/s | CGAL tets | CGAL s | CGAL tets/s "
+              "| time ratio rdmesh/CGAL | min dihedral (r / C) | max radius-edge (r / C) |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
+  auto ok = [](const std::optional<Outcome>& o) { return o && o->error.empty(); };
+  for (const Row& row : rows) {
+    std::string rt = "-", rs = "-", rtps = "-", ct = "-", cs = "-", ctps = "-", ratio = "-";
+    std::string rdih = "-", cdih = "-", rre = "-", cre = "-";
+    if (ok(row.r)) {
+      const Wire& w = row.r->w;
+      rt = std::to_string(w.tets);
+      rs = fmt("%.3f", w.seconds);
+      rtps = fmt("%.0f", w.tets / w.seconds);
+      rdih = fmt("%.2f", w.min_dihedral_deg);
+      rre = fmt("%.3f", w.max_radius_edge);
+    } else if (row.r) {
+      rt = cell_error(row.r->error);
+    }
+    if (ok(row.cg)) {
+      const Wire& w = row.cg->w;
+      ct = std::to_string(w.tets);
+      cs = fmt("%.3f", w.seconds);
+      ctps = fmt("%.0f", w.tets / w.seconds);
+      cdih = fmt("%.2f", w.min_dihedral_deg);
+      cre = fmt("%.3f", w.max_radius_edge);
+    } else if (row.cg) {
+      ct = cell_error(row.cg->error);
+    }
+    if (ok(row.r) && ok(row.cg)) ratio = fmt("%.2f", row.r->w.seconds / row.cg->w.seconds);
+    std::printf("| %s | %g | %s | %s | %s | %s | %s | %s | %s | %s / %s | %s / %s |\n",
+                row.c.name.c_str(), row.c.h, rt.c_str(), rs.c_str(), rtps.c_str(), ct.c_str(),
+                cs.c_str(), ctps.c_str(), ratio.c_str(), rdih.c_str(), cdih.c_str(), rre.c_str(),
+                cre.c_str());
+  }
+
+  std::printf("\nSanity and memory: vertices, total volume of the tets (exact volume of the smooth "
+              "domain in brackets),\nrdmesh oracle setup time (box sampling, not in 'rdmesh s'), "
+              "minimum-size guard rejections,\npeak RSS of each side's own process.\n\n");
+  std::printf("| case | vertices (r / C) | volume (r / C) [exact] | rdmesh oracle setup s | rdmesh guard "
+              "rejections | peak RSS MB (r / C) |\n");
+  std::printf("|---|---|---|---|---|---|\n");
+  for (const Row& row : rows) {
+    const rdmesh_bench::Shape* shape = rdmesh_bench::find_shape(row.c.shape);
+    std::string rv = "-", cv = "-", rvol = "-", cvol = "-", setup = "-", guard = "-", rm = "-",
+                cm = "-";
+    if (ok(row.r)) {
+      const Wire& w = row.r->w;
+      rv = std::to_string(w.vertices);
+      rvol = fmt("%.4f", w.volume);
+      setup = fmt("%.3f", w.setup_seconds);
+      guard = std::to_string(w.guard_rejections);
+    }
+    if (ok(row.cg)) {
+      cv = std::to_string(row.cg->w.vertices);
+      cvol = fmt("%.4f", row.cg->w.volume);
+    }
+    if (row.r && row.r->peak_rss_kb >= 0) rm = fmt("%.0f", row.r->peak_rss_kb / 1024.0);
+    if (row.cg && row.cg->peak_rss_kb >= 0) cm = fmt("%.0f", row.cg->peak_rss_kb / 1024.0);
+    std::printf("| %s | %s / %s | %s / %s [%.4f] | %s | %s | %s / %s |\n", row.c.name.c_str(),
+                rv.c_str(), cv.c_str(), rvol.c_str(), cvol.c_str(), shape->exact_volume,
+                setup.c_str(), guard.c_str(), rm.c_str(), cm.c_str());
+  }
+  for (const Row& row : rows) {
+    if (ok(row.r) && row.r->w.non_positive > 0)
+      std::printf("\nWARNING: %s: rdmesh output has %zu tets that are not positively oriented.\n",
+                  row.c.name.c_str(), static_cast<std::size_t>(row.r->w.non_positive));
+    if (ok(row.cg) && row.cg->w.non_positive > 0)
+      std::printf("\nWARNING: %s: CGAL output has %zu cells that are not positively oriented.\n",
+                  row.c.name.c_str(), static_cast<std::size_t>(row.cg->w.non_positive));
+  }
+  bool all_ok = true;
+  for (const Row& row : rows)
+    all_ok = all_ok && (!row.r || ok(row.r)) && (!row.cg || ok(row.cg));
+  return all_ok ? 0 : 1;
+}
