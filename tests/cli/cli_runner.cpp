@@ -1,0 +1,53 @@
+#include "cli_runner.h"
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <fstream>
+#include <random>
+#include <stdexcept>
+
+namespace rdmesh::test {
+
+ScratchDir::ScratchDir() {
+  std::random_device rd;
+  path_ = std::filesystem::temp_directory_path() / ("rdmesh-cli-" + std::to_string(rd()));
+  std::filesystem::create_directories(path_);
+}
+
+ScratchDir::~ScratchDir() {
+  std::error_code ec;
+  std::filesystem::remove_all(path_, ec);
+}
+
+std::string ScratchDir::write(const std::string& name, const std::string& text) const {
+  std::ofstream(path_ / name) << text;
+  return file(name);
+}
+
+std::size_t ScratchDir::entries() const {
+  std::size_t n = 0;
+  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(path_)) ++n;
+  return n;
+}
+
+CliRun run_cli(const std::string& args, const std::filesystem::path& dir) {
+  const std::string command =
+      "cd '" + dir.string() + "' && '" + std::string(RDMESH_CLI_PATH) + "' " + args + " 2>&1";
+  FILE* pipe = ::popen(command.c_str(), "r");
+  if (!pipe) throw std::runtime_error("popen failed: " + command);
+  CliRun run;
+  std::array<char, 4096> buffer;
+  size_t n;
+  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) run.output.append(buffer.data(), n);
+  const int status = ::pclose(pipe);
+  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return run;
+}
+
+std::string source_path(const std::string& relative) {
+  return std::string(RDMESH_SOURCE_DIR) + "/" + relative;
+}
+
+}  // namespace rdmesh::test
