@@ -141,11 +141,25 @@ std::optional<SurfaceHit> ImplicitOracle::intersect(const Point3& a, const Point
       auto g = [&](double t) { return f(a + t * dir); };
       const detail::Transition tr = detail::brent_transition(g, ts, vs[k], tt, vt[k], xtol);
       const std::uint64_t bit = std::uint64_t{1} << k;
-      const std::uint64_t s_best = tr.g_best < 0 ? (ss | bit) : (ss & ~bit);
-      const std::uint64_t s_other = tr.g_other < 0 ? (ss | bit) : (ss & ~bit);
-      return SurfaceHit{a + tr.best * dir,
-                        patch_between(SubdomainId(label_of(s_best)),
-                                      SubdomainId(label_of(s_other)))};
+      const Point3 hit = a + tr.best * dir;
+      // The other functions have equal signs at ts and tt but may change sign an
+      // even number of times in between: take their signs at the hit itself.
+      const std::uint64_t s_best = used_.size() == 1 ? (tr.g_best < 0 ? (ss | bit) : (ss & ~bit))
+                                                     : state_at(hit, vm.data());
+      const std::uint64_t s_other = tr.g_other < 0 ? (s_best | bit) : (s_best & ~bit);
+      const int l_best = label_of(s_best);
+      if (l_best != label_of(s_other)) {
+        return SurfaceHit{hit, patch_between(SubdomainId(l_best), SubdomainId(label_of(s_other)))};
+      }
+      // This sign change of f_k is not a label change: keep the half that has one.
+      if (l_best != ls) {
+        tt = tr.best, st = s_best, lt = l_best;
+        for (int j : used_) vt[j] = vm[j];
+      } else {
+        ts = tr.best, ss = s_best, ls = l_best;
+        for (int j : used_) vs[j] = vm[j];
+      }
+      // ... and fall through to a bisection step, which guarantees progress.
     }
     if ((tt - ts) <= xtol) break;
     const double tm = 0.5 * (ts + tt);

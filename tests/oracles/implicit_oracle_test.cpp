@@ -80,5 +80,120 @@ TEST(ImplicitOracle, FewEvaluationsPerIntersection) {
   EXPECT_LT(per_call, 20.0);
 }
 
+
+double torus(const Point3& p) {
+  const double q = std::sqrt(p.x * p.x + p.y * p.y) - 1.0;
+  return q * q + p.z * p.z - 0.09;
+}
+
+TEST(ImplicitOracle, TorusConformance) {
+  const ImplicitOracle o({{-1.5, -1.5, -0.5}, {1.5, 1.5, 0.5}}, {torus});
+  EXPECT_EQ(o.locate({1, 0, 0}), SubdomainId(1));
+  EXPECT_EQ(o.locate({0, 0, 0}), kOutside);
+  ASSERT_EQ(o.patches().size(), 1u);
+  expect_oracle_conformance(o);
+}
+
+TEST(ImplicitOracle, NestedSpheresHaveTwoSubdomainsAndTwoPatches) {
+  const ImplicitOracle o(cube(1.2),
+                         {[](const Point3& p) { return sphere(p, {}, 1); },
+                          [](const Point3& p) { return sphere(p, {}, 0.5); }},
+                         {{"shell", {0}, {1}}, {"core", {1}, {}}}, {"outer", "inner"});
+  EXPECT_EQ(o.locate({0.1, 0, 0}), SubdomainId(2));
+  EXPECT_EQ(o.locate({0.7, 0, 0}), SubdomainId(1));
+  EXPECT_EQ(o.locate({1.1, 0, 0}), kOutside);
+  const std::vector<PatchInfo> patches = o.patches();
+  ASSERT_EQ(patches.size(), 2u);
+  EXPECT_EQ(patches[0].side_a, kOutside);
+  EXPECT_EQ(patches[0].side_b, SubdomainId(1));
+  EXPECT_EQ(patches[0].name, "outside/shell");
+  EXPECT_EQ(patches[1].side_a, SubdomainId(1));
+  EXPECT_EQ(patches[1].side_b, SubdomainId(2));
+  EXPECT_EQ(patches[1].name, "shell/core");
+  for (const Point3& p : o.initial_points(patches[1].id)) EXPECT_NEAR(norm(p), 0.5, 1e-9);
+  // A segment through both surfaces reports one of the two crossings, exactly.
+  const auto hit = o.intersect({0, 0, 0}, {1.15, 0, 0});
+  ASSERT_TRUE(hit);
+  EXPECT_TRUE(std::abs(norm(hit->point) - 1) < 1e-9 || std::abs(norm(hit->point) - 0.5) < 1e-9);
+  expect_oracle_conformance(o);
+}
+
+TEST(ImplicitOracle, ThreeBallsGiveThreeComponentsWithPointsEach) {
+  const Point3 centers[3] = {{-0.9, 0, 0}, {0, 0.2, 0}, {0.9, 0, -0.1}};
+  const double radii[3] = {0.4, 0.3, 0.45};
+  const ImplicitOracle o({{-1.5, -1, -1}, {1.5, 1, 1}}, {[&](const Point3& p) {
+                           double f = sphere(p, centers[0], radii[0]);
+                           for (int i = 1; i < 3; ++i) f = std::min(f, sphere(p, centers[i], radii[i]));
+                           return f;
+                         }});
+  ASSERT_EQ(o.patches().size(), 1u);
+  const std::vector<Point3> points = o.initial_points(o.patches()[0].id);
+  EXPECT_GE(points.size(), 9u);
+  for (int i = 0; i < 3; ++i) {
+    int on_ball = 0;
+    for (const Point3& p : points) on_ball += std::abs(distance(p, centers[i]) - radii[i]) < 1e-9;
+    EXPECT_GE(on_ball, 3) << "ball " << i;
+  }
+  expect_oracle_conformance(o);
+}
+
+TEST(ImplicitOracle, PatchSmallerThanACellStillGetsThreePoints) {
+  // Two barely overlapping balls: the interface (a cap of the first sphere inside
+  // the second, radius ~0.07) meets a single edge of the 0.1-spaced grid.
+  const Point3 c1{-0.5, 0.003, -0.002}, c2{0.49, 0.003, -0.002};
+  const ImplicitOracle o(cube(1.2),
+                         {[&](const Point3& p) { return sphere(p, c1, 0.5); },
+                          [&](const Point3& p) { return sphere(p, c2, 0.5); }},
+                         {{"left", {0}, {}}, {"right", {1}, {}}}, {}, {.sampling_resolution = 24});
+  const PatchId interface = o.patch_between(SubdomainId(1), SubdomainId(2));
+  const std::vector<Point3> points = o.initial_points(interface);
+  EXPECT_GE(points.size(), 3u);
+  for (const Point3& p : points) {
+    EXPECT_NEAR(distance(p, c1), 0.5, 1e-9);
+    EXPECT_LT(distance(p, c2), 0.5);
+  }
+  expect_oracle_conformance(o);
+}
+
+TEST(ImplicitOracle, ProjectionOntoTheSphere) {
+  const ImplicitOracle o = unit_sphere_oracle();
+  const PatchId patch = o.patches()[0].id;
+  for (Point3 p : {Point3{0.9, 0.1, -0.2}, Point3{0.3, -1.05, 0.2}, Point3{0, 0, 0.8}}) {
+    const auto q = o.project(p, patch);
+    ASSERT_TRUE(q);
+    const Point3 exact = (1 / norm(p)) * p;
+    EXPECT_LT(distance(*q, exact), 1e-8);
+  }
+  EXPECT_FALSE(o.project({0, 0, 0.5}, PatchId(99)).has_value());
+}
+
+TEST(ImplicitOracle, ConstructorErrors) {
+  auto f = [](const Point3& p) { return sphere(p, {}, 1); };
+  auto message = [](auto&& build) {
+    try {
+      build();
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message([&] { ImplicitOracle(cube(1.2), {}); }).find("no function"), std::string::npos);
+  EXPECT_NE(message([&] { ImplicitOracle(cube(1.2), {f, f}); }).find("subdomains is required"),
+            std::string::npos);
+  EXPECT_NE(message([&] { ImplicitOracle(cube(1.2), {f}, {{"a", {3}, {}}}); })
+                .find("function index 3"),
+            std::string::npos);
+  EXPECT_NE(message([&] { ImplicitOracle({{0, 0, 0}, {1, 0, 1}}, {f}); }).find("box"),
+            std::string::npos);
+  EXPECT_NE(message([&] { ImplicitOracle({{0, NAN, 0}, {1, 1, 1}}, {f}); }).find("box"),
+            std::string::npos);
+  EXPECT_NE(message([&] { ImplicitOracle(cube(1.2), {f}, {{"never", {0}, {0}}}); })
+                .find("subdomain 'never' matches no point of the box"),
+            std::string::npos);
+  EXPECT_NE(message([&] { ImplicitOracle(cube(1.2), {f}, {{"in", {0}, {}}, {"again", {0}, {}}}); })
+                .find("subdomain 'again' matches no point of the box"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace rdmesh
