@@ -12,9 +12,9 @@ namespace rdmesh::detail {
 /// Result of brent_transition: the predicate g < 0 differs at `best` and `other`,
 /// and |best - other| <= xtol (+ a few ulps).
 struct Transition {
-  double best;     ///< the end of the final bracket with the smaller |g|
+  double best;  ///< the end of the final bracket with the smaller |g|
   double g_best;
-  double other;    ///< the other end of the final bracket
+  double other;  ///< the other end of the final bracket
   double g_other;
   int evaluations;
 };

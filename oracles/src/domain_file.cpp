@@ -19,8 +19,8 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-constexpr const char* kTopKeys[] = {"description", "bbox",        "functions",      "subdomains",
-                                    "curves",      "size",        "facet_size",     "cell_size",
+constexpr const char* kTopKeys[] = {"description",    "bbox",        "functions",  "subdomains",
+                                    "curves",         "size",        "facet_size", "cell_size",
                                     "facet_distance", "facet_angle", "radius_edge"};
 constexpr const char* kSubdomainKeys[] = {"name", "inside", "outside"};
 
@@ -50,8 +50,7 @@ class Parser {
     if (doc.contains("description") && !doc["description"].is_string()) {
       fail("'description' must be a string");
     }
-    if (doc.contains("curves") &&
-        !(doc["curves"].is_array() && doc["curves"].empty())) {
+    if (doc.contains("curves") && !(doc["curves"].is_array() && doc["curves"].empty())) {
       fail("curves are not supported yet (sharp features come in a later version)");
     }
     const Box3 box = parse_bbox(doc);
@@ -185,8 +184,7 @@ class Parser {
       }
       check_keys(s, std::begin(kSubdomainKeys), std::end(kSubdomainKeys),
                  "in subdomain '" + label + "'");
-      out.push_back(
-          {label, function_list(s, "inside", label), function_list(s, "outside", label)});
+      out.push_back({label, function_list(s, "inside", label), function_list(s, "outside", label)});
     }
     return out;
   }

@@ -67,7 +67,7 @@ std::unique_ptr<Compiled> compile(const std::string& text) {
 struct Expression::State {
   std::string text;
   std::uint64_t id = 0;
-  std::mutex mutex;                               // guards `per_thread`
+  std::mutex mutex;                                   // guards `per_thread`
   std::vector<std::unique_ptr<Compiled>> per_thread;  // one per evaluating thread
 };
 

@@ -37,6 +37,7 @@ ImplicitOracle::ImplicitOracle(Box3 box, std::vector<Function> functions,
     throw InputError("too many functions (" + std::to_string(n) + "), at most " +
                      std::to_string(kMaxFunctions));
   }
+  const bool named = !function_names_.empty() && !function_names_[0].empty();
   function_names_.resize(n);
   for (int k = 0; k < n; ++k) {
     if (function_names_[k].empty()) function_names_[k] = "function_" + std::to_string(k);
@@ -55,7 +56,7 @@ ImplicitOracle::ImplicitOracle(Box3 box, std::vector<Function> functions,
       throw InputError("a list of subdomains is required when there are " + std::to_string(n) +
                        " functions");
     }
-    subdomains.push_back({function_names_[0], {0}, {}});
+    subdomains.push_back({named ? function_names_[0] : std::string(), {0}, {}});
   }
   std::uint64_t used = 0;
   for (std::size_t i = 0; i < subdomains.size(); ++i) {
@@ -115,8 +116,8 @@ SubdomainId ImplicitOracle::locate(const Point3& p) const {
 PatchId ImplicitOracle::patch_between(SubdomainId sa, SubdomainId sb) const {
   int a = std::min(sa.value, sb.value), b = std::max(sa.value, sb.value);
   const int n = static_cast<int>(rules_.size());
-  if (a == b || a < 0 || b > n) throw OracleError("no patch between labels " +
-                                                  std::to_string(a) + " and " + std::to_string(b));
+  if (a == b || a < 0 || b > n)
+    throw OracleError("no patch between labels " + std::to_string(a) + " and " + std::to_string(b));
   // Pairs (i, j), i < j <= n, ranked lexicographically: row i holds n - i pairs.
   const int rank = a * n - a * (a - 1) / 2 + (b - a - 1);
   return PatchId(rank + 1);
@@ -144,8 +145,8 @@ std::optional<SurfaceHit> ImplicitOracle::intersect(const Point3& a, const Point
       const Point3 hit = a + tr.best * dir;
       // The other functions have equal signs at ts and tt but may change sign an
       // even number of times in between: take their signs at the hit itself.
-      const std::uint64_t s_best = used_.size() == 1 ? (tr.g_best < 0 ? (ss | bit) : (ss & ~bit))
-                                                     : state_at(hit, vm.data());
+      const std::uint64_t s_best =
+          used_.size() == 1 ? (tr.g_best < 0 ? (ss | bit) : (ss & ~bit)) : state_at(hit, vm.data());
       const std::uint64_t s_other = tr.g_other < 0 ? (s_best | bit) : (s_best & ~bit);
       const int l_best = label_of(s_best);
       if (l_best != label_of(s_other)) {
@@ -174,8 +175,7 @@ std::optional<SurfaceHit> ImplicitOracle::intersect(const Point3& a, const Point
     }
   }
   // Several signs change within tolerance (e.g. at the box or a junction of functions).
-  return SurfaceHit{a + (0.5 * (ts + tt)) * dir,
-                    patch_between(SubdomainId(ls), SubdomainId(lt))};
+  return SurfaceHit{a + (0.5 * (ts + tt)) * dir, patch_between(SubdomainId(ls), SubdomainId(lt))};
 }
 
 std::vector<Point3> ImplicitOracle::initial_points(PatchId patch) const {

@@ -111,8 +111,7 @@ void ImplicitOracle::sample_box() {
         for (int axis = 0; axis < 3; ++axis) {
           if (ni[axis] > cells || nj[axis] > cells || nk[axis] > cells) continue;
           if (labels[from] == labels[node_index(ni[axis], nj[axis], nk[axis])]) continue;
-          const auto hit =
-              intersect(node_point(i, j, k), node_point(ni[axis], nj[axis], nk[axis]));
+          const auto hit = intersect(node_point(i, j, k), node_point(ni[axis], nj[axis], nk[axis]));
           if (!hit) throw InternalError("implicit oracle: no crossing on a grid edge");
           edge_slot[3 * from + axis] = static_cast<int>(crossings.size());
           crossings.push_back({3 * from + axis, hit->point, hit->patch.value});
@@ -174,19 +173,23 @@ void ImplicitOracle::sample_box() {
         if (static_cast<int>(points.size()) >= kMinPointsPerComponent + 1) break;
         const int node = crossings[comp[c]].edge / 3, axis = crossings[comp[c]].edge % 3;
         const Point3 p0 = node_point(node % m, (node / m) % m, node / (m * m));
-        const Point3 along = axis == 0 ? Point3{spacing.x, 0, 0}
+        const Point3 along = axis == 0   ? Point3{spacing.x, 0, 0}
                              : axis == 1 ? Point3{0, spacing.y, 0}
                                          : Point3{0, 0, spacing.z};
         for (int shift = 0; shift < 4; ++shift) {
           const int other = (axis + 1 + shift / 2) % 3;
           Point3 offset;
-          (other == 0 ? offset.x : other == 1 ? offset.y : offset.z) =
-              (shift % 2 ? -fraction : fraction) *
-              (other == 0 ? spacing.x : other == 1 ? spacing.y : spacing.z);
+          (other == 0   ? offset.x
+           : other == 1 ? offset.y
+                        : offset.z) =
+              (shift % 2 ? -fraction : fraction) * (other == 0   ? spacing.x
+                                                    : other == 1 ? spacing.y
+                                                                 : spacing.z);
           const auto hit = intersect(p0 + offset, p0 + along + offset);
           if (!hit || hit->patch.value != patch) continue;
           bool fresh = true;
-          for (const Point3& q : points) fresh = fresh && distance(q, hit->point) > 1e3 * tolerance_;
+          for (const Point3& q : points)
+            fresh = fresh && distance(q, hit->point) > 1e3 * tolerance_;
           if (fresh) points.push_back(hit->point);
         }
       }
@@ -200,9 +203,8 @@ void ImplicitOracle::sample_box() {
       for (int b = a + 1; b <= n_sub; ++b) {
         if (patch_between(SubdomainId(a), SubdomainId(b)).value != id) continue;
         const std::string name_a = a == 0 ? "outside" : subdomain_infos_[a - 1].name;
-        patches_.push_back(
-            {PatchId(id), name_a + "/" + subdomain_infos_[b - 1].name, SubdomainId(a),
-             SubdomainId(b)});
+        patches_.push_back({PatchId(id), name_a + "/" + subdomain_infos_[b - 1].name,
+                            SubdomainId(a), SubdomainId(b)});
       }
     }
   }

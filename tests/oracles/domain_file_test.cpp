@@ -140,7 +140,8 @@ TEST(DomainFile, JsonErrors) {
   expect_error("{\n  \"bbox\": [1, 2,\n}", {"malformed JSON", "line 3, column 1"});
   expect_error("", {"malformed JSON"});
   expect_error("[1, 2]", {"top level must be a JSON object"});
-  expect_error("{" + kBox + ", " + kBall + R"(, "sise": 0.1})", {"unknown key 'sise'", "top level"});
+  expect_error("{" + kBox + ", " + kBall + R"(, "sise": 0.1})",
+               {"unknown key 'sise'", "top level"});
   expect_error("{" + kBox + ", " + kBall + R"(, "description": 3})", {"'description'"});
 }
 
@@ -170,7 +171,8 @@ TEST(DomainFile, FunctionErrors) {
 }
 
 TEST(DomainFile, SubdomainErrors) {
-  const std::string two = R"("functions": {"ball": "x^2 + y^2 + z^2 - 1", "hole": "x^2 + y^2 - 0.09"})";
+  const std::string two =
+      R"("functions": {"ball": "x^2 + y^2 + z^2 - 1", "hole": "x^2 + y^2 - 0.09"})";
   expect_error("{" + kBox + ", " + two + "}", {"'subdomains' is required", "2 given"});
   expect_error("{" + kBox + ", " + two + R"(, "subdomains": []})", {"non-empty list"});
   expect_error("{" + kBox + ", " + two + R"(, "subdomains": [{"name": "s", "inside": ["bal"]}]})",
@@ -181,9 +183,10 @@ TEST(DomainFile, SubdomainErrors) {
                {"list of function names"});
   expect_error("{" + kBox + ", " + two + R"(, "subdomains": [{"name": "e"}]})",
                {"subdomain 'e' has neither inside nor outside"});
-  expect_error("{" + kBox + ", " + two +
-                   R"(, "subdomains": [{"name": "void", "inside": ["hole"], "outside": ["hole"]}]})",
-               {"subdomain 'void' matches no point of the box"});
+  expect_error(
+      "{" + kBox + ", " + two +
+          R"(, "subdomains": [{"name": "void", "inside": ["hole"], "outside": ["hole"]}]})",
+      {"subdomain 'void' matches no point of the box"});
   expect_error(R"({"bbox": [5, 5, 5, 6, 6, 6], )" + kBall + "}",
                {"subdomain 'ball' matches no point of the box"});
 }

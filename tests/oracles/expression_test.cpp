@@ -3,8 +3,8 @@
 
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <atomic>
+#include <cmath>
 #include <numbers>
 #include <random>
 #include <thread>
@@ -21,7 +21,8 @@ TEST(Expression, ValuesMatchCpp) {
     double (*cpp)(double, double, double);
   };
   const Case cases[] = {
-      {"x^2 + y^2 + z^2 - 1", [](double x, double y, double z) { return x * x + y * y + z * z - 1; }},
+      {"x^2 + y^2 + z^2 - 1",
+       [](double x, double y, double z) { return x * x + y * y + z * z - 1; }},
       {"-x^2", [](double x, double, double) { return -(x * x); }},
       {"2^3^2 + z", [](double, double, double z) { return 512 + z; }},
       {"sqrt(abs(x*y)) - cos(z)",
@@ -103,7 +104,8 @@ TEST(Expression, OracleFromJsonIsThreadSafe) {
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> u(-1.5, 1.5);
   std::vector<std::pair<Point3, Point3>> segments;
-  for (int i = 0; i < 4000; ++i) segments.push_back({{u(rng), u(rng), u(rng)}, {u(rng), u(rng), u(rng)}});
+  for (int i = 0; i < 4000; ++i)
+    segments.push_back({{u(rng), u(rng), u(rng)}, {u(rng), u(rng), u(rng)}});
   std::vector<std::optional<SurfaceHit>> expected;
   for (const auto& [a, b] : segments) expected.push_back(o.intersect(a, b));
   std::vector<std::vector<std::optional<SurfaceHit>>> got(
@@ -123,7 +125,8 @@ TEST(Expression, OracleFromJsonIsThreadSafe) {
   int hits = 0;
   for (int t = 0; t < 4; ++t) {
     for (std::size_t i = 0; i < segments.size(); ++i) {
-      ASSERT_EQ(got[t][i].has_value(), expected[i].has_value()) << "thread " << t << " segment " << i;
+      ASSERT_EQ(got[t][i].has_value(), expected[i].has_value())
+          << "thread " << t << " segment " << i;
       if (!expected[i]) continue;
       ++hits;
       EXPECT_EQ(got[t][i]->point, expected[i]->point);

@@ -80,7 +80,6 @@ TEST(ImplicitOracle, FewEvaluationsPerIntersection) {
   EXPECT_LT(per_call, 20.0);
 }
 
-
 double torus(const Point3& p) {
   const double q = std::sqrt(p.x * p.x + p.y * p.y) - 1.0;
   return q * q + p.z * p.z - 0.09;
@@ -123,7 +122,8 @@ TEST(ImplicitOracle, ThreeBallsGiveThreeComponentsWithPointsEach) {
   const double radii[3] = {0.4, 0.3, 0.45};
   const ImplicitOracle o({{-1.5, -1, -1}, {1.5, 1, 1}}, {[&](const Point3& p) {
                            double f = sphere(p, centers[0], radii[0]);
-                           for (int i = 1; i < 3; ++i) f = std::min(f, sphere(p, centers[i], radii[i]));
+                           for (int i = 1; i < 3; ++i)
+                             f = std::min(f, sphere(p, centers[i], radii[i]));
                            return f;
                          }});
   ASSERT_EQ(o.patches().size(), 1u);
@@ -178,20 +178,29 @@ TEST(ImplicitOracle, ConstructorErrors) {
     return std::string("no error");
   };
   EXPECT_NE(message([&] { ImplicitOracle(cube(1.2), {}); }).find("no function"), std::string::npos);
-  EXPECT_NE(message([&] { ImplicitOracle(cube(1.2), {f, f}); }).find("subdomains is required"),
+  EXPECT_NE(message([&] {
+              ImplicitOracle(cube(1.2), {f, f});
+            }).find("subdomains is required"),
             std::string::npos);
-  EXPECT_NE(message([&] { ImplicitOracle(cube(1.2), {f}, {{"a", {3}, {}}}); })
-                .find("function index 3"),
+  EXPECT_NE(message([&] {
+              ImplicitOracle(cube(1.2), {f}, {{"a", {3}, {}}});
+            }).find("function index 3"),
             std::string::npos);
-  EXPECT_NE(message([&] { ImplicitOracle({{0, 0, 0}, {1, 0, 1}}, {f}); }).find("box"),
+  EXPECT_NE(message([&] {
+              ImplicitOracle({{0, 0, 0}, {1, 0, 1}}, {f});
+            }).find("box"),
             std::string::npos);
-  EXPECT_NE(message([&] { ImplicitOracle({{0, NAN, 0}, {1, 1, 1}}, {f}); }).find("box"),
+  EXPECT_NE(message([&] {
+              ImplicitOracle({{0, NAN, 0}, {1, 1, 1}}, {f});
+            }).find("box"),
             std::string::npos);
-  EXPECT_NE(message([&] { ImplicitOracle(cube(1.2), {f}, {{"never", {0}, {0}}}); })
-                .find("subdomain 'never' matches no point of the box"),
+  EXPECT_NE(message([&] {
+              ImplicitOracle(cube(1.2), {f}, {{"never", {0}, {0}}});
+            }).find("subdomain 'never' matches no point of the box"),
             std::string::npos);
-  EXPECT_NE(message([&] { ImplicitOracle(cube(1.2), {f}, {{"in", {0}, {}}, {"again", {0}, {}}}); })
-                .find("subdomain 'again' matches no point of the box"),
+  EXPECT_NE(message([&] {
+              ImplicitOracle(cube(1.2), {f}, {{"in", {0}, {}}, {"again", {0}, {}}});
+            }).find("subdomain 'again' matches no point of the box"),
             std::string::npos);
 }
 

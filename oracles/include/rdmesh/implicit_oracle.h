@@ -55,7 +55,8 @@ class ImplicitOracle final : public DomainOracle {
   static constexpr int kMaxFunctions = 63;
 
   /// Builds the oracle and samples the box (deterministic).
-  /// Empty `subdomains`: exactly one function is required and its inside is subdomain 1.
+  /// Empty `subdomains`: exactly one function is required and its inside is subdomain 1,
+  /// named after the function when `function_names` names it, else "subdomain_1".
   /// Throws InputError (message without a file name; callers add it) for: no
   /// function, too many functions, a null function, bad indices, a subdomain with
   /// neither inside nor outside functions, an empty or NaN box, a bad sampling
