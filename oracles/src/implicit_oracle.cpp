@@ -1,4 +1,4 @@
-// ImplicitOracle: construction, locate, intersect, project.
+// ImplicitOracle: construction, locate, intersect (projection: implicit_projection.cpp).
 // Sampling of the box (patch discovery, initial points) is in implicit_sampling.cpp.
 
 #include "rdmesh/implicit_oracle.h"
@@ -189,70 +189,6 @@ Point3 ImplicitOracle::gradient(int k, const Point3& p) const {
   return {(f({p.x + h, p.y, p.z}) - f({p.x - h, p.y, p.z})) / (2 * h),
           (f({p.x, p.y + h, p.z}) - f({p.x, p.y - h, p.z})) / (2 * h),
           (f({p.x, p.y, p.z + h}) - f({p.x, p.y, p.z - h})) / (2 * h)};
-}
-
-std::optional<Point3> ImplicitOracle::project_on_function(const Point3& p, int k, int a,
-                                                          int b) const {
-  const Function& f = functions_[k];
-  const double max_step = 0.25 * box_.diagonal();
-  // Newton along the gradient onto the zero set of f, from r.
-  auto newton = [&](Point3 q) -> std::optional<Point3> {
-    for (int it = 0; it < 60; ++it) {
-      const double v = f(q);
-      const Point3 g = gradient(k, q);
-      const double gg = squared_norm(g);
-      if (!(gg > 0) || !std::isfinite(v)) return std::nullopt;
-      Point3 step = (v / gg) * g;
-      const double len = norm(step);
-      if (len > max_step) step = (max_step / len) * step;
-      q = q - step;
-      if (len <= 0.05 * tolerance_) return q;
-    }
-    return std::nullopt;
-  };
-  std::optional<Point3> q = newton(p);
-  // Foot-point iteration: project p on the tangent plane at q, back onto the surface.
-  for (int it = 0; q && it < 200; ++it) {
-    Point3 n = gradient(k, *q);
-    const double nn = norm(n);
-    if (!(nn > 0)) return std::nullopt;
-    n = (1 / nn) * n;
-    const Point3 r = p - dot(p - *q, n) * n;
-    std::optional<Point3> next = newton(r);
-    if (!next) return std::nullopt;
-    const double moved = distance(*next, *q);
-    q = next;
-    if (moved <= tolerance_) break;
-  }
-  if (!q || !box_.contains(*q)) return std::nullopt;
-  // Verify: the labels on both sides along the normal are the patch's sides.
-  Point3 n = gradient(k, *q);
-  const double nn = norm(n);
-  if (!(nn > 0)) return std::nullopt;
-  const double probe = 100 * tolerance_ / nn;
-  const int l1 = locate(*q - probe * n).value, l2 = locate(*q + probe * n).value;
-  if (std::min(l1, l2) != a || std::max(l1, l2) != b) return std::nullopt;
-  return q;
-}
-
-std::optional<Point3> ImplicitOracle::project(const Point3& p, PatchId patch) const {
-  const int n = static_cast<int>(rules_.size());
-  int a = -1, b = -1;
-  for (int i = 0; i <= n && a < 0; ++i) {
-    for (int j = i + 1; j <= n; ++j) {
-      if (patch_between(SubdomainId(i), SubdomainId(j)) == patch) {
-        a = i, b = j;
-        break;
-      }
-    }
-  }
-  if (a < 0 || !is_finite(p)) return std::nullopt;
-  std::optional<Point3> best;
-  for (int k : used_) {
-    const std::optional<Point3> q = project_on_function(p, k, a, b);
-    if (q && (!best || distance(*q, p) < distance(*best, p))) best = q;
-  }
-  return best;
 }
 
 }  // namespace rdmesh

@@ -6,8 +6,12 @@
 //    gives a point and the patch actually crossed.
 // 3. Two crossings of the same patch on edges of a common grid cell belong to
 //    the same connected component (union-find), as in marching cubes.
-// 4. Each component contributes up to kPointsPerComponent crossings chosen by
-//    farthest-point sampling (spread out, deterministic). A component with fewer
+// 4. Each component contributes one crossing per kCrossingsPerPoint (at least
+//    kPointsPerComponent, at most kMaxPointsPerComponent), chosen by
+//    farthest-point sampling (spread out, deterministic). A handful of points is
+//    not enough: the Delaunay triangulation of 8 points on a torus has no
+//    Voronoi vertex inside the tube, so the refinement would see no restricted
+//    facet at all; a sample spaced at a few grid cells captures the topology. A component with fewer
 //    than three crossings (smaller than a grid cell) is enriched with crossings
 //    of grid-parallel segments shifted by fractions of a cell.
 
@@ -24,6 +28,8 @@ namespace rdmesh {
 namespace {
 
 constexpr int kPointsPerComponent = 8;
+constexpr int kMaxPointsPerComponent = 200;
+constexpr int kCrossingsPerPoint = 24;
 constexpr int kMinPointsPerComponent = 3;
 
 struct Crossing {
@@ -166,7 +172,9 @@ void ImplicitOracle::sample_box() {
     const int patch = crossings[comp.front()].patch;
     std::vector<Point3>& out = initial_points_[patch];
     std::vector<Point3> points;
-    for (int c : spread(crossings, comp, kPointsPerComponent)) points.push_back(crossings[c].point);
+    const int count = std::clamp(static_cast<int>(comp.size()) / kCrossingsPerPoint,
+                                 kPointsPerComponent, kMaxPointsPerComponent);
+    for (int c : spread(crossings, comp, count)) points.push_back(crossings[c].point);
     // Enrich components smaller than a cell with crossings of shifted grid edges.
     for (double fraction : {0.25, 0.125, 0.0625, 0.03125}) {
       for (std::size_t c = 0; c < comp.size(); ++c) {

@@ -77,8 +77,9 @@ class ImplicitOracle final : public DomainOracle {
   /// Empty for a patch id that sampling did not find.
   std::vector<Point3> initial_points(PatchId patch) const override;
   /// Newton projection onto the zero set of each function that can bound the
-  /// patch (finite-difference gradients), then a foot-point iteration; the result
-  /// is verified (labels on both sides along the normal are the patch's sides).
+  /// patch and onto each crease where two of them vanish (finite-difference
+  /// gradients), then a foot-point iteration; each result is verified (the
+  /// labels around it are the patch's sides).
   /// Returns the closest verified candidate, nullopt if none converges.
   std::optional<Point3> project(const Point3& p, PatchId patch) const override;
   /// 1e-10 times the box diagonal.
@@ -98,6 +99,7 @@ class ImplicitOracle final : public DomainOracle {
   std::uint64_t state_at(const Point3& p, double* values) const;
   int label_of(std::uint64_t state) const;
   std::optional<Point3> project_on_function(const Point3& p, int k, int a, int b) const;
+  std::optional<Point3> project_on_crease(const Point3& p, int k, int l, int a, int b) const;
   Point3 gradient(int k, const Point3& p) const;
   void sample_box();
 
