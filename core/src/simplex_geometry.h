@@ -4,20 +4,28 @@
 #pragma once
 
 #include <algorithm>
+#include <limits>
 
 #include "rdmesh/geometry.h"
 
 namespace rdmesh::detail {
 
-/// Circumcenter of tetrahedron abcd. For a flat tetrahedron the result is
-/// far away or non-finite; callers treat non-finite centers as "outside".
+/// Circumcenter of tetrahedron abcd computed exactly and rounded (exact_circumcenter.cpp);
+/// infinite coordinates for a flat tetrahedron.
+Point3 exact_tet_circumcenter(Point3 a, Point3 b, Point3 c, Point3 d);
+
+/// Circumcenter of tetrahedron abcd: the double formula, or the exact
+/// construction when the tetrahedron is so flat that the formula is unreliable
+/// (|det| below 1e-6 of the product of the edge lengths from a). Callers treat
+/// non-finite centers as "outside".
 inline Point3 tet_circumcenter(Point3 a, Point3 b, Point3 c, Point3 d) {
   const Point3 u = b - a, v = c - a, w = d - a;
   const double uu = squared_norm(u), vv = squared_norm(v), ww = squared_norm(w);
   const Point3 vw = cross(v, w), wu = cross(w, u), uv = cross(u, v);
-  const double det2 = 2.0 * dot(u, vw);
+  const double det = dot(u, vw);
+  if (det * det <= 1e-12 * uu * vv * ww) return exact_tet_circumcenter(a, b, c, d);
   const Point3 num = uu * vw + vv * wu + ww * uv;
-  return a + (1.0 / det2) * num;
+  return a + (0.5 / det) * num;
 }
 
 /// Circumcenter of triangle abc (in its plane).
