@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <exception>
 
+#include "rdmesh/errors.h"
 #include "rdmesh/mesh_writers.h"
 #include "rdmesh/mesher.h"
 #include "rdmesh/oracle.h"
@@ -58,6 +59,10 @@ class BallOracle final : public DomainOracle {
     return c_ + (r_ / n) * (p - c_);
   }
   double tolerance() const override { return 1e-12 * r_; }
+  // A sphere has no sharp features.
+  std::vector<CornerInfo> corners() const override { return {}; }
+  std::vector<CurveInfo> curves() const override { return {}; }
+  const Curve& curve(CurveId) const override { throw OracleError("the ball has no curves"); }
 
  private:
   Point3 c_;

@@ -4,6 +4,9 @@
 // verified by the labels around it, the closest verified one wins.
 #include <cmath>
 
+#include <string>
+
+#include "rdmesh/errors.h"
 #include "rdmesh/implicit_oracle.h"
 
 namespace rdmesh {
@@ -139,6 +142,10 @@ std::optional<Point3> ImplicitOracle::project_on_crease(const Point3& p, int k, 
   }
   if (!seen_a || !seen_b) return std::nullopt;
   return q;
+}
+
+const Curve& ImplicitOracle::curve(CurveId id) const {
+  throw OracleError("implicit domain has no curve " + std::to_string(id.value));
 }
 
 }  // namespace rdmesh

@@ -27,6 +27,9 @@ class ScriptedOracle : public DomainOracle {
   std::vector<PatchInfo> patches() const override { return {}; }
   std::vector<Point3> initial_points(PatchId) const override { return {}; }
   double tolerance() const override { return 1e-12; }
+  std::vector<CornerInfo> corners() const override { return {}; }
+  std::vector<CurveInfo> curves() const override { return {}; }
+  const Curve& curve(CurveId) const override { throw OracleError("no curves"); }
   std::optional<Point3> project(const Point3& p, PatchId patch) const override {
     ++calls[patch.value];
     if (patch.value == 1) return p + Point3{0, 0, p.x * (kS - p.x)};

@@ -84,6 +84,10 @@ class ImplicitOracle final : public DomainOracle {
   std::optional<Point3> project(const Point3& p, PatchId patch) const override;
   /// 1e-10 times the box diagonal.
   double tolerance() const override { return tolerance_; }
+  /// Sharp features are not declared yet: no corners, no curves.
+  std::vector<CornerInfo> corners() const override { return {}; }
+  std::vector<CurveInfo> curves() const override { return {}; }
+  const Curve& curve(CurveId id) const override;
 
   /// The id of the patch between labels a != b (in any order), listed or not.
   PatchId patch_between(SubdomainId a, SubdomainId b) const;

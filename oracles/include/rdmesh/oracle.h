@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "rdmesh/curve.h"
 #include "rdmesh/geometry.h"
 
 namespace rdmesh {
@@ -68,6 +69,17 @@ class DomainOracle {
 
   /// Absolute accuracy of the points returned by intersect(), initial_points() and project().
   virtual double tolerance() const = 0;
+
+  // --- Sharp features: curves L and corners Q (empty for a smooth domain) ---
+
+  /// All corners, ids 1..n in order.
+  virtual std::vector<CornerInfo> corners() const = 0;
+
+  /// All curves, ids 1..n in order.
+  virtual std::vector<CurveInfo> curves() const = 0;
+
+  /// Exact queries on curve `id`; throws OracleError for an unknown id.
+  virtual const Curve& curve(CurveId id) const = 0;
 };
 
 }  // namespace rdmesh
