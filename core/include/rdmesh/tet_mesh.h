@@ -27,9 +27,21 @@ struct TetMesh {
   /// Patch of each triangle.
   std::vector<PatchId> triangle_patch;
 
-  /// Names and ids of the domain's subdomains and patches (copied from the oracle).
+  /// Feature edges (the restricted edges D|L_j), each written once, oriented
+  /// along increasing curve parameter. Both vertices are mesh vertices.
+  std::vector<std::array<int, 2>> edges;
+  /// Curve of each feature edge.
+  std::vector<CurveId> edge_curve;
+
+  /// Mesh vertices that are corners of the input (Q), and the corner each one is.
+  std::vector<int> corner_vertices;
+  std::vector<CornerId> corner_ids;
+
+  /// Names and ids of the domain's features (copied from the oracle).
   std::vector<SubdomainInfo> subdomains;
   std::vector<PatchInfo> patches;
+  std::vector<CurveInfo> curves;
+  std::vector<CornerInfo> corners;
 };
 
 }  // namespace rdmesh
