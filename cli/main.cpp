@@ -58,6 +58,10 @@ int run(const rdmesh::cli::Options& opt) {
   if (!opt.quiet) {
     std::cout << format_summary(quality) << cli::format_run_summary(opt, result.stats, times);
   }
+  for (const PatchId& patch : result.stats.missing_patches) {
+    std::fprintf(stderr, "rdmesh: warning: patch %d has no triangle in the mesh (too small for "
+                 "the sizes, or missed by the initial points)\n", patch.value);
+  }
   if (result.stats.guard_fired()) {
     std::fprintf(stderr,
                  "rdmesh: warning: the minimum-size guard refused %zu refinement points; the "

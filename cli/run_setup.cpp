@@ -120,6 +120,8 @@ void write_json_report(const Options& opt, const Criteria& criteria, const Refin
                      {"cell_centers_inserted", stats.inserted_cell_centers},
                      {"encroachments", stats.encroachments}};
   j["guard"] = {{"fired", stats.guard_fired()}, {"rejected_points", stats.guard_rejections}};
+  j["missing_patches"] = nlohmann::json::array();
+  for (const PatchId& p : stats.missing_patches) j["missing_patches"].push_back(p.value);
   j["seconds"] = {{"load", times.load},
                   {"initial_points", stats.seconds_initial},
                   {"refine", stats.seconds_refine},

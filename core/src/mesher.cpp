@@ -1,6 +1,10 @@
 #include "rdmesh/mesher.h"
 
 #include <chrono>
+#include <set>
+#include <string>
+
+#include "rdmesh/errors.h"
 
 #include "refiner.h"
 
@@ -9,6 +13,20 @@ namespace {
 
 double seconds_since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+/// An empty mesh is an error, a patch without triangles a warning in the stats.
+void check_output(const DomainOracle& oracle, MeshResult& result) {
+  if (result.mesh.tets.empty()) {
+    throw OracleError("refinement produced no tetrahedron: the oracle's " +
+                      std::to_string(result.stats.initial_points) +
+                      " initial points do not capture the domain");
+  }
+  std::set<int> present;
+  for (const PatchId& p : result.mesh.triangle_patch) present.insert(p.value);
+  for (const PatchInfo& patch : oracle.patches()) {
+    if (!present.count(patch.id.value)) result.stats.missing_patches.push_back(patch.id);
+  }
 }
 
 }  // namespace
@@ -32,6 +50,7 @@ MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& criteria,
   result.stats.seconds_initial = initial;
   result.stats.seconds_refine = refine;
   result.stats.seconds_extract = seconds_since(t);
+  check_output(oracle, result);
   return result;
 }
 

@@ -176,3 +176,42 @@ TEST(SmoothDomains, InvalidCriteriaAreRejected) {
 
 }  // namespace
 }  // namespace rdmesh
+
+namespace rdmesh {
+namespace {
+
+/// An oracle whose initial points all sit on one side of a thin slab: no
+/// Voronoi vertex falls inside, so refinement has nothing to start from.
+class BlindOracle final : public DomainOracle {
+ public:
+  Box3 bounding_box() const override { return {{-1, -1, -1}, {1, 1, 1}}; }
+  SubdomainId locate(const Point3& p) const override {
+    return std::abs(p.z) < 1e-3 && bounding_box().contains(p) ? SubdomainId{1} : kOutside;
+  }
+  std::optional<SurfaceHit> intersect(const Point3&, const Point3&) const override {
+    return std::nullopt;
+  }
+  std::vector<SubdomainInfo> subdomains() const override { return {{SubdomainId{1}, "slab"}}; }
+  std::vector<PatchInfo> patches() const override {
+    return {{PatchId{1}, "slab", kOutside, SubdomainId{1}}};
+  }
+  std::vector<Point3> initial_points(PatchId) const override {
+    return {{0, 0, 0.9}, {1, 0, 0.95}, {0, 1, 0.9}, {0.5, 0.5, 0.5}, {-0.5, 0.2, 0.7}};
+  }
+  std::optional<Point3> project(const Point3& p, PatchId) const override { return p; }
+  double tolerance() const override { return 1e-12; }
+  std::vector<CornerInfo> corners() const override { return {}; }
+  std::vector<CurveInfo> curves() const override { return {}; }
+  const Curve& curve(CurveId) const override { throw OracleError("no curves"); }
+};
+
+TEST(SmoothDomains, AnEmptyResultIsAnErrorNotASilentEmptyMesh) {
+  const BlindOracle oracle;
+  Criteria c;
+  c.facet_size = c.cell_size = ScalarField::uniform(0.5);
+  c.facet_distance = 0.05;
+  EXPECT_THROW(generate_mesh(oracle, c), OracleError);
+}
+
+}  // namespace
+}  // namespace rdmesh

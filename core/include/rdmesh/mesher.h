@@ -33,6 +33,9 @@ struct RefinementStats {
   std::size_t encroachments = 0;           ///< cell centers redirected to a facet (refine-tet-facet-or-edge)
   std::size_t guard_rejections = 0;        ///< refinement points refused by the minimum-size guard
   bool guard_fired() const { return guard_rejections > 0; }
+  /// Patches the oracle lists but no output triangle carries (a component the
+  /// initial points missed, or a patch too small for the criteria).
+  std::vector<PatchId> missing_patches;
   double seconds_initial = 0.0;
   double seconds_refine = 0.0;
   double seconds_extract = 0.0;
@@ -45,7 +48,9 @@ struct MeshResult {
 
 /// Runs Delaunay refinement on `oracle` until every rule R3-R5 is satisfied
 /// (or the guard stops it) and returns the restricted mesh D|O with D|S.
-/// Throws InputError for invalid criteria, OracleError when the oracle fails.
+/// Throws InputError for invalid criteria, OracleError when the oracle fails
+/// or the result has no tetrahedron at all (the oracle's initial points do not
+/// capture the domain).
 MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& criteria,
                          const MeshOptions& options = {});
 
