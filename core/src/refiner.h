@@ -34,6 +34,8 @@ class Refiner {
 
   const RefinementStats& stats() const { return stats_; }
   const Triangulation& triangulation() const { return tr_; }
+  /// Mutable access for the optimizers that run after refine() (core/src/optimize/).
+  Triangulation& triangulation() { return tr_; }
 
  private:
   struct QueueEntry {
