@@ -63,10 +63,17 @@ int run(const rdmesh::cli::Options& opt) {
                  "the sizes, or missed by the initial points)\n", patch.value);
   }
   if (result.stats.guard_fired()) {
+    std::string where;
+    for (const std::string& f : result.stats.guard_features) where += (where.empty() ? "" : "; ") + f;
     std::fprintf(stderr,
-                 "rdmesh: warning: the minimum-size guard refused %zu refinement points; the "
-                 "input may violate the angle hypothesis of RR-7912 (see the report)\n",
-                 result.stats.guard_rejections);
+                 "rdmesh: warning: the minimum-size guard refused %zu refinement points (%s); the "
+                 "input may violate the angle hypothesis of RR-7912 (features meeting below 90 "
+                 "degrees)\n",
+                 result.stats.guard_rejections, where.c_str());
+  }
+  if (result.stats.unmeshed_feature_edges > 0) {
+    std::fprintf(stderr, "rdmesh: warning: %zu feature edges are not edges of the mesh\n",
+                 result.stats.unmeshed_feature_edges);
   }
   return 0;
 }

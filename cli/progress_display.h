@@ -19,8 +19,9 @@ class ProgressDisplay {
     if (!enabled_ || p.elapsed_seconds < 1.0) return;
     if (!tty_ && p.elapsed_seconds - last_print_ < 5.0) return;
     last_print_ = p.elapsed_seconds;
-    std::fprintf(stderr, "%srefining: %zu vertices, queues %zu facets / %zu cells, %.1f s%s",
-                 tty_ ? "\r" : "", p.vertices, p.facet_queue, p.cell_queue, p.elapsed_seconds,
+    std::fprintf(stderr, "%srefining: %zu vertices, queues %zu edges / %zu facets / %zu cells, %.1f s%s",
+                 tty_ ? "\r" : "", p.vertices, p.edge_queue, p.facet_queue, p.cell_queue,
+                 p.elapsed_seconds,
                  tty_ ? "   " : "\n");
     printed_ = true;
   }

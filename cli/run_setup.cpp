@@ -20,7 +20,9 @@ void add_options(CLI::App& app, Options& opt) {
   app.add_option("input", opt.input, "Domain: .json implicit domain file")->required();
   app.add_option("-o,--output", opt.output,
                  "Output mesh: .mesh (Medit), .msh (Gmsh 4.1) or .vtu (VTK); default INPUT-stem.msh");
-  app.add_option("--size", opt.size, "Target size h: facet size = cell size = h, facet distance h/10");
+  app.add_option("--size", opt.size, "Target size h: edge, facet and cell size = h, facet distance h/10");
+  app.add_option("--edge-size", opt.edge_size,
+                 "Max radius of restricted edge balls on sharp curves (R2); default: facet size");
   app.add_option("--facet-size", opt.facet_size, "Max radius of surface Delaunay balls (R4.1)");
   app.add_option("--cell-size", opt.cell_size, "Max circumradius of tetrahedra (R5.1)");
   app.add_option("--facet-distance", opt.facet_distance,
@@ -76,6 +78,9 @@ Criteria resolve_criteria(const Options& opt, const LoadedInput& input) {
   if (h.cell_size && !opt.size) c.cell_size = *h.cell_size;
   if (opt.facet_size) c.facet_size = ScalarField::uniform(*opt.facet_size);
   if (opt.cell_size) c.cell_size = ScalarField::uniform(*opt.cell_size);
+  // Curves follow the facet size unless told otherwise.
+  c.edge_size = c.facet_size;
+  if (opt.edge_size) c.edge_size = ScalarField::uniform(*opt.edge_size);
   // Facet distance follows the facet size (1/10) unless given.
   const Point3 center = input.oracle->bounding_box().center();
   c.facet_distance = 0.1 * c.facet_size(center);
@@ -96,9 +101,10 @@ Criteria resolve_criteria(const Options& opt, const LoadedInput& input) {
 
 namespace {
 
-nlohmann::json field_json(const ScalarField& f, const Point3& at) {
+/// A uniform size as its value, a varying one as "varying" (its expression is in the input).
+nlohmann::json field_json(const ScalarField& f) {
   if (f.is_uniform()) return f.constant;
-  return {{"expression", true}, {"value_at_box_center", f(at)}};
+  return "varying";
 }
 
 }  // namespace
@@ -106,20 +112,24 @@ nlohmann::json field_json(const ScalarField& f, const Point3& at) {
 void write_json_report(const Options& opt, const Criteria& criteria, const RefinementStats& stats,
                        const QualityReport& quality, const RunTimes& times) {
   nlohmann::json j = to_json(quality);
-  const Point3 origin{0, 0, 0};
   j["input"] = opt.input;
   j["output"] = opt.output;
-  j["criteria"] = {{"facet_size", field_json(criteria.facet_size, origin)},
-                   {"cell_size", field_json(criteria.cell_size, origin)},
+  j["criteria"] = {{"edge_size", field_json(criteria.edge_size)},
+                   {"facet_size", field_json(criteria.facet_size)},
+                   {"cell_size", field_json(criteria.cell_size)},
                    {"facet_distance", criteria.facet_distance},
                    {"facet_angle_deg", criteria.facet_angle_deg},
                    {"cell_radius_edge", criteria.cell_radius_edge},
                    {"min_size", criteria.min_size}};
   j["refinement"] = {{"initial_points", stats.initial_points},
+                     {"edge_centers_inserted", stats.inserted_edge_centers},
                      {"facet_centers_inserted", stats.inserted_facet_centers},
                      {"cell_centers_inserted", stats.inserted_cell_centers},
                      {"encroachments", stats.encroachments}};
-  j["guard"] = {{"fired", stats.guard_fired()}, {"rejected_points", stats.guard_rejections}};
+  j["guard"] = {{"fired", stats.guard_fired()},
+                {"rejected_points", stats.guard_rejections},
+                {"features", stats.guard_features}};
+  j["unmeshed_feature_edges"] = stats.unmeshed_feature_edges;
   j["missing_patches"] = nlohmann::json::array();
   for (const PatchId& p : stats.missing_patches) j["missing_patches"].push_back(p.value);
   j["seconds"] = {{"load", times.load},
@@ -137,7 +147,7 @@ std::string format_run_summary(const Options& opt, const RefinementStats& stats,
   s.setf(std::ios::fixed);
   s.precision(2);
   s << "refinement: " << stats.initial_points << " initial points, "
-    << stats.inserted_facet_centers << " facet centers, " << stats.inserted_cell_centers
+    << stats.inserted_edge_centers << " edge centers, " << stats.inserted_facet_centers << " facet centers, " << stats.inserted_cell_centers
     << " cell centers, " << stats.encroachments << " encroachments\n";
   s << "guard: " << (stats.guard_fired() ? "FIRED" : "not fired") << " ("
     << stats.guard_rejections << " points refused)\n";

@@ -20,7 +20,7 @@ namespace rdmesh::cli {
 struct Options {
   std::string input;
   std::string output;  ///< default: the input's stem + ".msh" in the current directory
-  std::optional<double> size, facet_size, cell_size, facet_distance, facet_angle, radius_edge,
+  std::optional<double> size, edge_size, facet_size, cell_size, facet_distance, facet_angle, radius_edge,
       min_size;
   std::string report;  ///< JSON report path, empty = none
   bool quiet = false;

@@ -22,6 +22,7 @@ void require_positive(const ScalarField& f, const char* what) {
 }  // namespace
 
 void Criteria::validate() const {
+  require_positive(edge_size, "edge size");
   require_positive(facet_size, "facet size");
   require_positive(cell_size, "cell size");
   require_positive(facet_distance, "facet distance");
@@ -38,6 +39,7 @@ void Criteria::validate() const {
 Criteria default_criteria(const Box3& box) {
   Criteria c;
   const double h = box.diagonal() / 20.0;
+  c.edge_size = ScalarField::uniform(h);
   c.facet_size = ScalarField::uniform(h);
   c.cell_size = ScalarField::uniform(h);
   c.facet_distance = h / 10.0;

@@ -1,5 +1,6 @@
-// Output: the cells of D|O (label != 0) and the facets of D|S (restricted
-// facets), each facet once, oriented towards its side of smaller label.
+// Output: the cells of D|O (label != 0), the facets of D|S (restricted
+// facets), each facet once, oriented towards its side of smaller label, and
+// the edges of D|L in curve order with the corners.
 #include "refiner.h"
 
 namespace rdmesh::detail {
@@ -41,7 +42,31 @@ TetMesh Refiner::extract_mesh() {
       mesh.triangle_patch.push_back(PatchId{patch});
     }
   }
+  extract_features(mesh);
   return mesh;
+}
+
+void Refiner::extract_features(TetMesh& mesh) {
+  mesh.curves = oracle_.curves();
+  mesh.corners = corners_;
+  for (std::size_t i = 0; i < corner_vertices_.size(); ++i) {
+    const int index = corner_vertices_[i]->info().index;
+    if (index < 0) continue;  // not in any tetrahedron: reported by the tests/report
+    mesh.corner_vertices.push_back(index);
+    mesh.corner_ids.push_back(CornerId{static_cast<int>(i) + 1});
+  }
+  for (CurveState& c : curves_) {
+    for (auto a = c.samples.begin(); c.has_next(a); ++a) {
+      const int i0 = a->second.vertex->info().index;
+      const int i1 = std::next(a)->second.vertex->info().index;
+      if (i0 < 0 || i1 < 0) {
+        ++stats_.unmeshed_feature_edges;
+        continue;
+      }
+      mesh.edges.push_back({i0, i1});
+      mesh.edge_curve.push_back(c.info.id);
+    }
+  }
 }
 
 }  // namespace rdmesh::detail

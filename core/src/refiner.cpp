@@ -1,13 +1,16 @@
-// The refinement procedures of RR-7912 section 3, without curves (R3-R5):
-//   refine-facet          insert the center of the facet's surface Delaunay ball;
-//   refine-tet-or-facet   consider the cell's circumcenter c_t: if c_t lies in
-//                         the surface Delaunay ball of a restricted facet (it
-//                         "encroaches" it), refine that facet instead; else
-//                         insert c_t.
-// Rules apply in order: a facet rule (R3, R4) always runs before a cell rule (R5).
+// The refinement procedures of RR-7912 section 3:
+//   refine-edge               insert the center of the edge's restricted Delaunay
+//                             ball, on the curve;
+//   refine-facet-or-edge      consider the center c_f of the facet's surface
+//                             Delaunay ball: if it encroaches a restricted edge
+//                             (lies inside its ball), refine that edge, else insert c_f;
+//   refine-tet-facet-or-edge  consider the circumcenter c_t: encroached edges
+//                             first, then encroached facets, else insert c_t.
+// Rules apply in order: arcs (R1, R2) before facets (R3, R4) before cells (R5).
 #include "refiner.h"
 
 #include <cmath>
+#include <algorithm>
 
 #include "rdmesh/errors.h"
 
@@ -27,14 +30,27 @@ Refiner::Refiner(const DomainOracle& oracle, const Criteria& criteria, const Mes
   zone_boundary_.reserve(128);
   new_cells_.reserve(128);
   start_time_ = std::chrono::steady_clock::now();
+  load_curves();
 }
 
 void Refiner::insert_initial_points() {
+  insert_corners_and_curve_samples();
   Cell_handle hint;
   for (const PatchInfo& patch : oracle_.patches()) {
     for (const Point3& p : oracle_.initial_points(patch.id)) {
+      // A patch point close to a curve sample would encroach its arc at once.
+      bool near_curve = false;
+      for (const CurveState& c : curves_) {
+        const double spacing2 = squared_norm(to_point3(std::next(c.samples.begin())->second.vertex->point()) -
+                                             to_point3(c.samples.begin()->second.vertex->point()));
+        for (const auto& sample : c.samples) {
+          near_curve = near_curve ||
+                       squared_norm(p - to_point3(sample.second.vertex->point())) < 0.25 * spacing2;
+        }
+      }
+      if (near_curve) continue;
       const Vertex_handle v = tr_.insert(to_weighted(p), hint);
-      if (v == Vertex_handle()) continue;  // coincides with an existing point
+      if (v == Vertex_handle() || v->info().dim != FeatureDim::kVolume) continue;  // a duplicate
       v->info().dim = FeatureDim::kPatch;
       v->info().feature = patch.id.value;
       hint = v->cell();
@@ -54,20 +70,31 @@ void Refiner::insert_initial_points() {
     const double badness = cell_badness(c);
     if (badness > 0) cell_queue_.push({badness, c->info().stamp, c, -1});
   }
+  for (std::size_t j = 0; j < curves_.size(); ++j) {
+    CurveState& c = curves_[j];
+    for (auto a = c.samples.begin(); c.has_next(a); ++a) create_arc(static_cast<int>(j), a, true);
+  }
 }
 
 void Refiner::refine() {
   for (;;) {
-    if (!facet_queue_.empty()) {
+    if (!arc_queue_.empty()) {
+      const ArcEntry e = arc_queue_.top();
+      arc_queue_.pop();
+      const std::optional<CurveState::Arc> a = find_arc(e.arc);
+      // R1 entries (priority 1e300) stay valid while the arc exists.
+      if (!a || (e.priority < 1e300 && arc_badness(e.arc.curve, *a) <= 0)) continue;
+      refine_edge(e.arc.curve, *a);
+    } else if (!facet_queue_.empty()) {
       const QueueEntry e = facet_queue_.top();
       facet_queue_.pop();
       if (stale(e) || facet_badness(e.cell, e.facet) <= 0) continue;
-      refine_facet(e.cell, e.facet);
+      refine_facet_or_edge(e.cell, e.facet);
     } else if (!cell_queue_.empty()) {
       const QueueEntry e = cell_queue_.top();
       cell_queue_.pop();
       if (stale(e) || cell_badness(e.cell) <= 0) continue;
-      refine_tet(e);
+      refine_tet_facet_or_edge(e);
     } else {
       break;
     }
@@ -76,74 +103,125 @@ void Refiner::refine() {
   if (options_.progress) report_progress();
 }
 
-void Refiner::refine_facet(Cell_handle c, int i) {
-  const Weighted_point p = to_weighted(c->info().surface_center[i]);
+bool Refiner::refine_edge(int curve, CurveState::Arc a) {
+  const CurveSample& s = a->second;
+  const auto b = std::next(a);
+  const VertexInfo info{FeatureDim::kCurve, curve + 1, s.t_center, -1};
+  if (!(s.t_center > a->first && s.t_center < b->first)) {
+    record_guard(info, s.vertex->info());  // the arc is too short to split
+    return false;
+  }
+  const Weighted_point p = to_weighted(s.center);
+  if (!find_conflict_zone(p, tr_.locate(p, s.vertex->cell()))) {
+    record_guard(info, s.vertex->info());
+    return false;
+  }
+  const double t = s.t_center;
+  const Vertex_handle v = insert_in_zone(p, info);
+  if (v == Vertex_handle()) return false;
+  ++stats_.inserted_edge_centers;
+  CurveState& c = curves_[curve];
+  const auto mid = c.samples.emplace_hint(b, t, CurveSample{v, {}, 0, 0});
+  create_arc(curve, a, true);
+  create_arc(curve, mid, true);
+  return true;
+}
+
+bool Refiner::refine_facet_or_edge(Cell_handle c, int i) {
+  const Point3 center = c->info().surface_center[i];
+  const Weighted_point p = to_weighted(center);
   // The ball center lies on the dual Voronoi edge, hence inside the Delaunay
   // ball of at least one of the two incident cells.
   Cell_handle start = c;
-  if (tr_.side_of_power_sphere(start, p) != CGAL::ON_BOUNDED_SIDE) {
-    start = c->neighbor(i);
-    if (tr_.side_of_power_sphere(start, p) != CGAL::ON_BOUNDED_SIDE) start = tr_.locate(p, c);
-  }
-  const int patch = c->info().facet_patch[i];
+  if (tr_.side_of_power_sphere(start, p) != CGAL::ON_BOUNDED_SIDE) start = c->neighbor(i);
+  const VertexInfo info{FeatureDim::kPatch, c->info().facet_patch[i], 0, -1};
   if (!find_conflict_zone(p, start)) {
-    ++stats_.guard_rejections;  // the center coincides with a vertex
-    return;
+    record_guard(info, c->vertex((i + 1) & 3)->info());  // the center coincides with a vertex
+    return false;
   }
-  if (!insert_in_zone(p, FeatureDim::kPatch, patch)) return;
+  if (const auto arc = encroached_arc(center)) {
+    ++stats_.encroachments;
+    return refine_edge(arc->first, arc->second);
+  }
+  if (insert_in_zone(p, info) == Vertex_handle()) return false;
   ++stats_.inserted_facet_centers;
+  return true;
 }
 
-void Refiner::refine_tet(const QueueEntry& entry) {
+bool Refiner::refine_tet_facet_or_edge(const QueueEntry& entry) {
   const Cell_handle c = entry.cell;
   const Point3 center = c->info().circumcenter;
   const Weighted_point p = to_weighted(center);
-  Cell_handle start = c;
-  if (tr_.side_of_power_sphere(start, p) != CGAL::ON_BOUNDED_SIDE) start = tr_.locate(p, c);
-  if (!find_conflict_zone(p, start)) return;
+  if (!find_conflict_zone(p, c)) return false;
+  bool redirected = false, inserted = false;
+  if (const auto arc = encroached_arc(center)) {
+    redirected = true;
+    inserted = refine_edge(arc->first, arc->second);
+  } else {
+    Cell_handle fc;
+    int fi = -1;
+    if (encroached_facet(center, fc, fi)) {
+      redirected = true;
+      inserted = refine_facet_or_edge(fc, fi);
+    }
+  }
+  if (redirected) {
+    ++stats_.encroachments;
+    if (inserted && !stale(entry)) cell_queue_.push(entry);  // the cell may still need refining
+    return inserted;
+  }
+  if (insert_in_zone(p, VertexInfo{}) == Vertex_handle()) return false;
+  ++stats_.inserted_cell_centers;
+  return true;
+}
 
-  // refine-tet-or-facet: a surface Delaunay ball containing c_t is a facet of
-  // a conflict cell (the ball lies in the union of its two cells' balls).
-  Cell_handle enc_cell;
-  int enc_facet = -1;
-  double enc_radius = -1;
+bool Refiner::encroached_facet(const Point3& x, Cell_handle& cell, int& facet) const {
+  // A surface Delaunay ball lies in the union of its facet's two Delaunay
+  // balls, so a ball containing x belongs to a facet of a conflict cell.
+  double best = -1;
   for (const Cell_handle& z : zone_cells_) {
     for (int i = 0; i < 4; ++i) {
       if (z->info().facet_patch[i] == 0) continue;
       const Point3 sc = z->info().surface_center[i];
       const double r2 = squared_norm(to_point3(z->vertex((i + 1) & 3)->point()) - sc);
-      if (squared_norm(center - sc) < r2 && r2 > enc_radius) {
-        enc_cell = z;
-        enc_facet = i;
-        enc_radius = r2;
+      if (squared_norm(x - sc) < r2 && r2 > best) {
+        cell = z;
+        facet = i;
+        best = r2;
       }
     }
   }
-  if (enc_facet >= 0) {
-    ++stats_.encroachments;
-    refine_facet(enc_cell, enc_facet);
-    if (!stale(entry)) cell_queue_.push(entry);  // the cell may still need refining
-    return;
-  }
-  if (insert_in_zone(p, FeatureDim::kVolume, 0)) ++stats_.inserted_cell_centers;
+  return best >= 0;
 }
 
 bool Refiner::find_conflict_zone(const Weighted_point& p, Cell_handle start) {
+  if (tr_.side_of_power_sphere(start, p) != CGAL::ON_BOUNDED_SIDE) start = tr_.locate(p, start);
   zone_cells_.clear();
   zone_boundary_.clear();
+  zone_feature_vertices_.clear();
   tr_.find_conflicts(p, start, std::back_inserter(zone_boundary_), std::back_inserter(zone_cells_));
+  for (const Cell_handle& z : zone_cells_) {
+    for (int k = 0; k < 4; ++k) {
+      const Vertex_handle v = z->vertex(k);
+      if (tr_.is_infinite(v) || v->info().dim > FeatureDim::kCurve) continue;
+      if (std::find(zone_feature_vertices_.begin(), zone_feature_vertices_.end(), v) ==
+          zone_feature_vertices_.end()) {
+        zone_feature_vertices_.push_back(v);
+      }
+    }
+  }
   return !zone_cells_.empty();
 }
 
-bool Refiner::insert_in_zone(const Weighted_point& p, FeatureDim dim, int feature) {
+Vertex_handle Refiner::insert_in_zone(const Weighted_point& p, const VertexInfo& info) {
   // Termination guard: the nearest vertex of p is a vertex of a conflict cell.
   const Point3 q = to_point3(p);
   for (const Cell_handle& z : zone_cells_) {
     for (int k = 0; k < 4; ++k) {
       const Vertex_handle v = z->vertex(k);
       if (!tr_.is_infinite(v) && squared_norm(to_point3(v->point()) - q) < min_size_sq_) {
-        ++stats_.guard_rejections;
-        return false;
+        record_guard(info, v->info());
+        return Vertex_handle();
       }
     }
   }
@@ -151,10 +229,10 @@ bool Refiner::insert_in_zone(const Weighted_point& p, FeatureDim dim, int featur
   const Triangulation::Facet& f = zone_boundary_.front();
   const Vertex_handle v =
       tr_.insert_in_hole(p, zone_cells_.begin(), zone_cells_.end(), f.first, f.second);
-  v->info().dim = dim;
-  v->info().feature = feature;
+  v->info() = info;
   after_insertion(v);
-  return true;
+  recheck_arcs_after(v);
+  return v;
 }
 
 void Refiner::after_insertion(Vertex_handle v) {
@@ -175,10 +253,33 @@ void Refiner::after_insertion(Vertex_handle v) {
   }
 }
 
+std::string Refiner::describe(const VertexInfo& v) const {
+  switch (v.dim) {
+    case FeatureDim::kCorner:
+      return "corner " + std::to_string(v.feature);
+    case FeatureDim::kCurve:
+      return "curve " + curves_[v.feature - 1].info.name;
+    case FeatureDim::kPatch:
+      return "patch " + std::to_string(v.feature);
+    case FeatureDim::kVolume:
+      return "volume";
+  }
+  return "?";
+}
+
+void Refiner::record_guard(const VertexInfo& candidate, const VertexInfo& nearest) {
+  ++stats_.guard_rejections;
+  if (stats_.guard_features.size() >= 20) return;
+  const std::string what = describe(candidate) + " near " + describe(nearest);
+  auto& list = stats_.guard_features;
+  if (std::find(list.begin(), list.end(), what) == list.end()) list.push_back(what);
+}
+
 void Refiner::report_progress() {
   insertions_since_progress_ = 0;
   Progress p;
   p.vertices = tr_.number_of_vertices();
+  p.edge_queue = arc_queue_.size();
   p.facet_queue = facet_queue_.size();
   p.cell_queue = cell_queue_.size();
   p.elapsed_seconds =

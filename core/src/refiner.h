@@ -1,22 +1,27 @@
-// Private to core/: the Delaunay refinement of RR-7912 section 3 for domains
-// bounded by smooth patches (rules R3, R4, R5 and refine-tet-facet-or-edge).
+// Private to core/: the Delaunay refinement of RR-7912 section 3 (rules R1-R5
+// with refine-edge, refine-facet-or-edge and refine-tet-facet-or-edge).
 //
 // State: one regular triangulation with zero weights (= the Delaunay
 // triangulation D(P)); for each cell its label (D|O) and for each facet its
-// restricted status (D|S_k) with its surface Delaunay ball. Two priority
-// queues hold the elements that violate a rule, worst first: facets (R3, R4)
-// and cells (R5). A rule is only tested on elements created by an insertion
-// (the conflict zone); stale queue entries are recognised by their stamp.
+// restricted status (D|S_k) with its surface Delaunay ball; for each curve its
+// samples and the restricted Delaunay balls of the arcs between them (D|L_j,
+// restricted_curves.h). Three priority queues hold the elements that violate a
+// rule, worst first: arcs (R1, R2), facets (R3, R4) and cells (R5). A rule is
+// only tested on elements created or touched by an insertion (the conflict
+// zone); stale queue entries are recognised by their stamp.
 #pragma once
 
 #include <chrono>
+#include <optional>
 #include <cstdint>
 #include <queue>
+#include <string>
 #include <vector>
 
 #include "rdmesh/criteria.h"
 #include "rdmesh/mesher.h"
 #include "rdmesh/oracle.h"
+#include "restricted_curves.h"
 #include "triangulation_types.h"
 
 namespace rdmesh::detail {
@@ -25,11 +30,12 @@ class Refiner {
  public:
   Refiner(const DomainOracle& oracle, const Criteria& criteria, const MeshOptions& options);
 
-  /// P_0: at least three points on every connected patch (oracle initial points).
+  /// P_0: the corners Q, then samples on every curve (at least two per curve,
+  /// corners included), then at least three points on every connected patch.
   void insert_initial_points();
-  /// Applies R3-R5 until no rule applies (or only guarded elements remain).
+  /// Applies R1-R5 until no rule applies (or only guarded elements remain).
   void refine();
-  /// The tetrahedra of D|O and the triangles of D|S, labelled.
+  /// The tetrahedra of D|O, the triangles of D|S and the edges of D|L, labelled.
   TetMesh extract_mesh();
 
   const RefinementStats& stats() const { return stats_; }
@@ -48,8 +54,23 @@ class Refiner {
       return priority < o.priority || (priority == o.priority && stamp > o.stamp);
     }
   };
+  struct ArcEntry {
+    double priority;
+    std::uint64_t order;  ///< insertion order, for deterministic ties
+    ArcRef arc;
+    bool operator<(const ArcEntry& o) const {
+      return priority < o.priority || (priority == o.priority && order > o.order);
+    }
+  };
+  /// An element whose refinement point encroaches a restricted edge or facet.
+  struct Encroached {
+    int curve = -1;  ///< >= 0: the arc (curve, t) is encroached
+    double t = 0;
+    Cell_handle cell;  ///< else, when valid: the facet (cell, facet)
+    int facet = -1;
+  };
 
-  // --- restricted complex bookkeeping (restricted_complex.cpp) ---
+  // --- D|O and D|S bookkeeping (restricted_complex.cpp) ---
   void init_cell(Cell_handle c);
   /// Recomputes facet (c, i)'s restricted status on both sides and queues it if bad.
   void update_facet(Cell_handle c, int i);
@@ -59,17 +80,45 @@ class Refiner {
   double facet_badness(Cell_handle c, int i) const;
   /// Badness of a cell of D|O (> 0 when R5 applies).
   double cell_badness(Cell_handle c) const;
+  /// Whether vertex v lies on patch `patch` (on it, or on a curve/corner bounding it).
+  bool on_patch(const VertexInfo& v, int patch) const;
+
+  // --- D|L bookkeeping (restricted_curves.cpp) ---
+  void load_curves();
+  void insert_corners_and_curve_samples();
+  /// Computes the restricted Delaunay ball of the arc starting at `a` and queues it if bad.
+  void create_arc(int curve, CurveState::Arc a, bool check_empty);
+  /// Badness of an arc (> 0 when R1 or R2 applies).
+  double arc_badness(int curve, CurveState::Arc a) const;
+  /// The arcs having vertex v as an endpoint.
+  void arcs_of(Vertex_handle v, std::vector<std::pair<int, CurveState::Arc>>& out);
+  /// The live arc an entry refers to, or nullopt when it was split meanwhile.
+  std::optional<CurveState::Arc> find_arc(const ArcRef& ref);
+  void push_arc(int curve, CurveState::Arc a, double badness);
+  /// The largest restricted edge ball of the conflict zone containing x, if any.
+  std::optional<std::pair<int, CurveState::Arc>> encroached_arc(const Point3& x);
+  /// After inserting v: arcs of the old zone whose ball now contains v lose their edge (R1).
+  void recheck_arcs_after(Vertex_handle v);
 
   // --- refinement procedures (refiner.cpp) ---
-  void refine_facet(Cell_handle c, int i);
-  void refine_tet(const QueueEntry& entry);
-  /// Finds the conflict zone of p starting at `start` (a cell in conflict).
+  bool refine_edge(int curve, CurveState::Arc a);
+  bool refine_facet_or_edge(Cell_handle c, int i);
+  bool refine_tet_facet_or_edge(const QueueEntry& entry);
+  /// The largest surface Delaunay ball of the conflict zone containing x, if any.
+  bool encroached_facet(const Point3& x, Cell_handle& cell, int& facet) const;
+  /// Finds the conflict zone of p starting at `start` (a cell in conflict, else
+  /// the walk locates p from it), and its corner and curve vertices.
   bool find_conflict_zone(const Weighted_point& p, Cell_handle start);
-  /// Inserts p in the hole found by find_conflict_zone; false if the guard refused it.
-  bool insert_in_zone(const Weighted_point& p, FeatureDim dim, int feature);
+  /// Inserts p in the hole found by find_conflict_zone; null if the guard refused it.
+  Vertex_handle insert_in_zone(const Weighted_point& p, const VertexInfo& info);
   void after_insertion(Vertex_handle v);
   bool stale(const QueueEntry& e) const { return e.cell->info().stamp != e.stamp; }
   void report_progress();
+  /// Appends the edges of D|L and the corner vertices (after cells and facets).
+  void extract_features(TetMesh& mesh);
+  /// Counts a point refused by the minimum-size guard and names the features involved.
+  void record_guard(const VertexInfo& candidate, const VertexInfo& nearest);
+  std::string describe(const VertexInfo& v) const;
 
   const DomainOracle& oracle_;
   Criteria criteria_;
@@ -81,13 +130,23 @@ class Refiner {
 
   Triangulation tr_;
   std::uint32_t next_stamp_ = 1;
+  std::uint64_t next_arc_order_ = 0;
+  std::priority_queue<ArcEntry> arc_queue_;
   std::priority_queue<QueueEntry> facet_queue_;
   std::priority_queue<QueueEntry> cell_queue_;
+
+  std::vector<CurveState> curves_;                 ///< index = CurveId - 1
+  std::vector<CornerInfo> corners_;                ///< index = CornerId - 1
+  std::vector<Vertex_handle> corner_vertices_;     ///< index = CornerId - 1
+  std::vector<std::vector<int>> curve_patches_;    ///< index = CurveId - 1
+  std::vector<std::vector<int>> corner_patches_;   ///< index = CornerId - 1
 
   // Scratch buffers reused by every insertion (no allocation in the loop).
   std::vector<Cell_handle> zone_cells_;
   std::vector<Triangulation::Facet> zone_boundary_;
   std::vector<Cell_handle> new_cells_;
+  std::vector<Vertex_handle> zone_feature_vertices_;  ///< corner/curve vertices of the zone
+  std::vector<std::pair<int, CurveState::Arc>> arcs_scratch_;
 
   RefinementStats stats_;
   std::chrono::steady_clock::time_point start_time_;

@@ -5,6 +5,7 @@
 //    S_k. The edge joins the circumcenters of the two incident cells, so it
 //    crosses the boundary when their labels differ; the crossing point, found
 //    by the oracle, is the center of the facet's surface Delaunay ball.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -90,9 +91,9 @@ double Refiner::facet_badness(Cell_handle c, int i) const {
   if (patch == 0) return 0.0;
   const Vertex_handle v[3] = {c->vertex((i + 1) & 3), c->vertex((i + 2) & 3),
                               c->vertex((i + 3) & 3)};
-  // R3: every vertex of a facet of D|S_k must lie on S_k.
+  // R3: every vertex of a facet of D|S_k must lie on S_k (or on its boundary curves).
   for (const Vertex_handle& vh : v) {
-    if (vh->info().dim != FeatureDim::kPatch || vh->info().feature != patch) return 1e300;
+    if (!on_patch(vh->info(), patch)) return 1e300;
   }
   const Point3 p[3] = {to_point3(v[0]->point()), to_point3(v[1]->point()),
                        to_point3(v[2]->point())};
@@ -114,6 +115,23 @@ double Refiner::facet_badness(Cell_handle c, int i) const {
   const double dmax2 = criteria_.facet_distance * criteria_.facet_distance;
   if (!(d2 <= dmax2)) badness = std::max(badness, std::isfinite(d2) ? d2 / dmax2 : 1e200);
   return badness;
+}
+
+bool Refiner::on_patch(const VertexInfo& v, int patch) const {
+  auto contains = [patch](const std::vector<int>& patches) {
+    return std::find(patches.begin(), patches.end(), patch) != patches.end();
+  };
+  switch (v.dim) {
+    case FeatureDim::kPatch:
+      return v.feature == patch;
+    case FeatureDim::kCurve:
+      return contains(curve_patches_[v.feature - 1]);
+    case FeatureDim::kCorner:
+      return contains(corner_patches_[v.feature - 1]);
+    case FeatureDim::kVolume:
+      return false;
+  }
+  return false;
 }
 
 double Refiner::cell_badness(Cell_handle c) const {

@@ -20,11 +20,13 @@ namespace rdmesh::detail {
 /// Dimension of the input feature a sample point lies on (RR-7912: F_0..F_3).
 enum class FeatureDim : std::int8_t { kCorner = 0, kCurve = 1, kPatch = 2, kVolume = 3 };
 
-/// Per vertex: on which feature it was inserted (refine-facet inserts on a
-/// patch, refine-tet in the volume). Rule R3 reads it.
+/// Per vertex: on which feature it was inserted (corners first, refine-edge on
+/// a curve, refine-facet on a patch, refine-tet in the volume). Rules R1 and
+/// R3 read it.
 struct VertexInfo {
   FeatureDim dim = FeatureDim::kVolume;
-  int feature = 0;  ///< PatchId value when dim == kPatch
+  int feature = 0;  ///< CornerId / CurveId / PatchId value for dim 0 / 1 / 2
+  double t = 0.0;   ///< curve parameter when dim == kCurve
   int index = -1;   ///< scratch: output index during extraction
 };
 

@@ -7,6 +7,9 @@ namespace rdmesh {
 
 /// The rules' parameters. Sizes are absolute lengths.
 struct Criteria {
+  /// R2: radius of a restricted edge's Delaunay ball (centered on the curve) <= edge_size(center).
+  /// The chord of each restricted edge also stays within facet_distance of its curve.
+  ScalarField edge_size = ScalarField::uniform(0.1);
   /// R4.1: radius of a restricted facet's surface Delaunay ball <= facet_size(center).
   ScalarField facet_size = ScalarField::uniform(0.1);
   /// R4.2: minimum angle of a restricted facet, in degrees (equivalent to a
@@ -28,8 +31,8 @@ struct Criteria {
   void validate() const;
 };
 
-/// Defaults derived from the domain's bounding box: size = diagonal / 20,
-/// facet_distance = size / 10.
+/// Defaults derived from the domain's bounding box: size = diagonal / 20 for
+/// edges, facets and cells, facet_distance = size / 10.
 Criteria default_criteria(const Box3& box);
 
 }  // namespace rdmesh

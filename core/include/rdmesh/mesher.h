@@ -15,6 +15,7 @@ namespace rdmesh {
 /// Snapshot handed to the progress callback.
 struct Progress {
   std::size_t vertices = 0;       ///< vertices in the triangulation
+  std::size_t edge_queue = 0;     ///< restricted edges waiting (R1, R2)
   std::size_t facet_queue = 0;    ///< restricted facets waiting (R3, R4)
   std::size_t cell_queue = 0;     ///< cells waiting (R5)
   double elapsed_seconds = 0.0;
@@ -28,11 +29,17 @@ struct MeshOptions {
 /// What refinement did, for the report.
 struct RefinementStats {
   std::size_t initial_points = 0;
+  std::size_t inserted_edge_centers = 0;   ///< points inserted on curves by R1/R2
   std::size_t inserted_facet_centers = 0;  ///< points inserted by R3/R4
   std::size_t inserted_cell_centers = 0;   ///< points inserted by R5
-  std::size_t encroachments = 0;           ///< cell centers redirected to a facet (refine-tet-facet-or-edge)
+  std::size_t encroachments = 0;           ///< points redirected to an encroached facet or edge
   std::size_t guard_rejections = 0;        ///< refinement points refused by the minimum-size guard
   bool guard_fired() const { return guard_rejections > 0; }
+  /// The features involved in guard rejections, e.g. "curve 2 near patch 3"
+  /// (distinct pairs, at most 20).
+  std::vector<std::string> guard_features;
+  /// Restricted edges left out of the output because an endpoint is in no tetrahedron.
+  std::size_t unmeshed_feature_edges = 0;
   /// Patches the oracle lists but no output triangle carries (a component the
   /// initial points missed, or a patch too small for the criteria).
   std::vector<PatchId> missing_patches;

@@ -1,0 +1,207 @@
+// D|L_j: the restricted Delaunay triangulations of the curves (RR-7912 section 3).
+//
+// Rules on an arc between consecutive samples p, q of curve L_j, with
+// restricted Delaunay ball B(c, r) (c on the arc, |c - p| = |c - q| = r):
+//   R1  a vertex not on the arc lies inside B: the edge pq is not in D|L_j
+//       and the Voronoi cell of another vertex reaches the arc: refine-edge;
+//   R2  r > edge_size(c), or the chord pq is farther than facet_distance from
+//       c: refine-edge.
+// refine-edge inserts c, on the true curve.
+#include <algorithm>
+#include <limits>
+
+#include "rdmesh/errors.h"
+#include "refiner.h"
+
+namespace rdmesh::detail {
+namespace {
+
+double squared_distance_to_segment(Point3 x, Point3 a, Point3 b) {
+  const Point3 ab = b - a;
+  const double len2 = squared_norm(ab);
+  const double s = len2 > 0 ? std::clamp(dot(x - a, ab) / len2, 0.0, 1.0) : 0.0;
+  return squared_norm(a + s * ab - x);
+}
+
+}  // namespace
+
+void Refiner::load_curves() {
+  corners_ = oracle_.corners();
+  for (std::size_t i = 0; i < corners_.size(); ++i) {
+    if (corners_[i].id.value != static_cast<int>(i) + 1) {
+      throw OracleError("oracle corners must have ids 1..n in order");
+    }
+    std::vector<int> patches;
+    for (const PatchId& p : corners_[i].patches) patches.push_back(p.value);
+    corner_patches_.push_back(std::move(patches));
+  }
+  for (const CurveInfo& info : oracle_.curves()) {
+    if (info.id.value != static_cast<int>(curves_.size()) + 1) {
+      throw OracleError("oracle curves must have ids 1..n in order");
+    }
+    CurveState state;
+    state.info = info;
+    state.curve = &oracle_.curve(info.id);
+    curves_.push_back(std::move(state));
+    std::vector<int> patches;
+    for (const PatchId& p : info.patches) patches.push_back(p.value);
+    curve_patches_.push_back(std::move(patches));
+  }
+}
+
+void Refiner::insert_corners_and_curve_samples() {
+  std::vector<Vertex_handle> corner_vertex(corners_.size());
+  Cell_handle hint;
+  auto insert = [&](const Point3& p, FeatureDim dim, int feature, double t) {
+    const Vertex_handle v = tr_.insert(to_weighted(p), hint);
+    if (v->info().dim != FeatureDim::kVolume && v->info().dim != dim) {
+      throw OracleError("two features of the oracle share the point (" + std::to_string(p.x) +
+                        ", " + std::to_string(p.y) + ", " + std::to_string(p.z) + ")");
+    }
+    v->info().dim = dim;
+    v->info().feature = feature;
+    v->info().t = t;
+    hint = v->cell();
+    ++stats_.initial_points;
+    return v;
+  };
+  for (std::size_t i = 0; i < corners_.size(); ++i) {
+    corner_vertices_.push_back(Vertex_handle());
+    corner_vertex[i] = corner_vertices_[i] = insert(corners_[i].point, FeatureDim::kCorner, static_cast<int>(i) + 1, 0);
+  }
+  // Each curve starts with its ends and two interior points (three arcs), so
+  // that no arc is the whole of a closed curve.
+  for (std::size_t j = 0; j < curves_.size(); ++j) {
+    CurveState& c = curves_[j];
+    const double tb = c.info.t_begin, te = c.info.t_end;
+    const int id = static_cast<int>(j) + 1;
+    const double total = c.curve->length(tb, te);
+    Vertex_handle first;
+    if (c.info.closed) {
+      first = insert(c.curve->point(tb), FeatureDim::kCurve, id, tb);
+    } else {
+      first = corner_vertex.at(c.info.start.value - 1);
+    }
+    c.samples[tb].vertex = first;
+    for (int k = 1; k <= 2; ++k) {
+      const double t = c.curve->parameter_at_length(tb, total * k / 3.0);
+      if (t <= tb || t >= te) continue;
+      c.samples[t].vertex = insert(c.curve->point(t), FeatureDim::kCurve, id, t);
+    }
+    c.samples[te].vertex = c.info.closed ? first : corner_vertex.at(c.info.end.value - 1);
+  }
+}
+
+void Refiner::create_arc(int curve, CurveState::Arc a, bool check_empty) {
+  CurveState& c = curves_[curve];
+  const auto b = std::next(a);
+  const Point3 p = to_point3(a->second.vertex->point());
+  const Point3 q = to_point3(b->second.vertex->point());
+  // The ball center: where the arc crosses the bisector plane of pq (the
+  // largest ball if it crosses several times).
+  const Point3 n = q - p;
+  const double offset = 0.5 * (squared_norm(q) - squared_norm(p));
+  double best_t = 0, best_r2 = -1;
+  for (double t : c.curve->plane_crossings(n, offset, a->first, b->first)) {
+    const double r2 = squared_norm(c.curve->point(t) - p);
+    if (r2 > best_r2) best_t = t, best_r2 = r2;
+  }
+  if (best_r2 < 0) {  // numerically no crossing: take the arc's middle
+    best_t = c.curve->parameter_at_length(a->first, 0.5 * c.curve->length(a->first, b->first));
+  }
+  CurveSample& s = a->second;
+  s.t_center = best_t;
+  s.center = c.curve->point(best_t);
+  s.squared_radius = std::max(squared_norm(s.center - p), squared_norm(s.center - q));
+  double badness = arc_badness(curve, a);
+  if (check_empty && badness < 1e300) {
+    // R1: is the ball empty? Its nearest vertex must be p or q.
+    const Vertex_handle w = tr_.nearest_power_vertex(
+        Kernel::Point_3(s.center.x, s.center.y, s.center.z), a->second.vertex->cell());
+    if (w != a->second.vertex && w != b->second.vertex &&
+        squared_norm(to_point3(w->point()) - s.center) < s.squared_radius) {
+      badness = 1e300;
+    }
+  }
+  if (badness > 0) push_arc(curve, a, badness);
+}
+
+double Refiner::arc_badness(int curve, CurveState::Arc a) const {
+  const CurveSample& s = a->second;
+  const Point3 p = to_point3(s.vertex->point());
+  const Point3 q = to_point3(std::next(a)->second.vertex->point());
+  double badness = 0;
+  const double sigma = criteria_.edge_size(s.center);
+  if (s.squared_radius > sigma * sigma) badness = s.squared_radius / (sigma * sigma);
+  const double d2 = squared_distance_to_segment(s.center, p, q);
+  const double dmax2 = criteria_.facet_distance * criteria_.facet_distance;
+  if (d2 > dmax2) badness = std::max(badness, d2 / dmax2);
+  (void)curve;
+  return badness;
+}
+
+void Refiner::push_arc(int curve, CurveState::Arc a, double badness) {
+  arc_queue_.push({badness, next_arc_order_++,
+                   ArcRef{curve, a->first, a->second.vertex, std::next(a)->second.vertex}});
+}
+
+std::optional<CurveState::Arc> Refiner::find_arc(const ArcRef& ref) {
+  CurveState& c = curves_[ref.curve];
+  const auto a = c.samples.find(ref.t);
+  if (a == c.samples.end() || !c.has_next(a)) return std::nullopt;
+  if (a->second.vertex != ref.a || std::next(a)->second.vertex != ref.b) return std::nullopt;
+  return a;
+}
+
+void Refiner::arcs_of(Vertex_handle v, std::vector<std::pair<int, CurveState::Arc>>& out) {
+  out.clear();
+  const VertexInfo& info = v->info();
+  auto add_around = [&](int curve, std::map<double, CurveSample>::iterator it) {
+    CurveState& c = curves_[curve];
+    if (it == c.samples.end()) return;
+    if (c.has_next(it)) out.emplace_back(curve, it);
+    if (it != c.samples.begin()) out.emplace_back(curve, std::prev(it));
+  };
+  if (info.dim == FeatureDim::kCurve) {
+    const int curve = info.feature - 1;
+    CurveState& c = curves_[curve];
+    add_around(curve, c.samples.find(info.t));
+    if (c.info.closed && info.t == c.info.t_begin) add_around(curve, c.samples.find(c.info.t_end));
+  } else if (info.dim == FeatureDim::kCorner) {
+    for (const CurveId& id : corners_[info.feature - 1].curves) {
+      CurveState& c = curves_[id.value - 1];
+      if (c.info.start.value == info.feature) add_around(id.value - 1, c.samples.begin());
+      if (c.info.end.value == info.feature) add_around(id.value - 1, std::prev(c.samples.end()));
+    }
+  }
+}
+
+std::optional<std::pair<int, CurveState::Arc>> Refiner::encroached_arc(const Point3& x) {
+  std::optional<std::pair<int, CurveState::Arc>> best;
+  double best_r2 = -1;
+  for (const Vertex_handle& w : zone_feature_vertices_) {
+    arcs_of(w, arcs_scratch_);
+    for (const auto& [curve, arc] : arcs_scratch_) {
+      const CurveSample& s = arc->second;
+      if (squared_norm(x - s.center) < s.squared_radius && s.squared_radius > best_r2) {
+        best = std::make_pair(curve, arc);
+        best_r2 = s.squared_radius;
+      }
+    }
+  }
+  return best;
+}
+
+void Refiner::recheck_arcs_after(Vertex_handle v) {
+  const Point3 x = to_point3(v->point());
+  for (const Vertex_handle& w : zone_feature_vertices_) {
+    arcs_of(w, arcs_scratch_);
+    for (const auto& [curve, arc] : arcs_scratch_) {
+      const CurveSample& s = arc->second;
+      if (arc->second.vertex == v || std::next(arc)->second.vertex == v) continue;
+      if (squared_norm(x - s.center) < s.squared_radius) push_arc(curve, arc, 1e300);  // R1
+    }
+  }
+}
+
+}  // namespace rdmesh::detail

@@ -1,0 +1,46 @@
+// Private to core/: the restricted Delaunay triangulations D|L_j of the curves.
+//
+// Samples of a curve are kept sorted by parameter. Between two consecutive
+// samples p, q the arc carries the restricted Delaunay ball of the edge pq:
+// its center c is the point of the arc equidistant to p and q (a point of the
+// Voronoi facet V(p, q) on L_j), its radius |c - p|. The edge pq belongs to
+// D|L_j while that ball is empty; a vertex entering the ball means the Voronoi
+// cell of a vertex not on the arc reaches the curve (rule R1). A closed curve
+// carries its first sample twice, at t_begin and at t_end, so that every arc
+// is a pair of consecutive map entries.
+#pragma once
+
+#include <map>
+#include <vector>
+
+#include "rdmesh/curve.h"
+#include "triangulation_types.h"
+
+namespace rdmesh::detail {
+
+/// The sample at parameter t and the arc from it to the next sample.
+struct CurveSample {
+  Vertex_handle vertex;
+  Point3 center;         ///< restricted Delaunay ball of the arc to the next sample
+  double t_center = 0;   ///< parameter of the center
+  double squared_radius = 0;
+};
+
+struct CurveState {
+  CurveInfo info;
+  const Curve* curve = nullptr;
+  std::map<double, CurveSample> samples;  ///< by parameter
+
+  using Arc = std::map<double, CurveSample>::iterator;  ///< arc = sample and its successor
+  bool has_next(Arc a) const { return std::next(a) != samples.end(); }
+};
+
+/// An arc of curve `curve` starting at parameter `t`, with the vertices it
+/// joined when it was queued (to recognise a stale entry).
+struct ArcRef {
+  int curve;  ///< index into the curve table (id - 1)
+  double t;
+  Vertex_handle a, b;
+};
+
+}  // namespace rdmesh::detail
