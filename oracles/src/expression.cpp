@@ -6,6 +6,7 @@
 #include <cctype>
 #include <mutex>
 #include <numbers>
+#include <string>
 #include <unordered_map>
 #include <vector>
 
@@ -30,7 +31,16 @@ std::mutex& compile_mutex() {
 
 std::atomic<std::uint64_t> next_id{1};
 
-std::string describe(const mu::Parser::exception_type& e, const std::string& text) {
+std::string defined_text(const std::vector<std::string>& variables) {
+  std::string out;
+  for (std::size_t i = 0; i < variables.size(); ++i) {
+    out += (i == 0 ? "" : ", ") + variables[i];
+  }
+  return out + (variables.size() == 1 ? " is defined" : " are defined");
+}
+
+std::string describe(const mu::Parser::exception_type& e, const std::string& text,
+                     const std::vector<std::string>& variables) {
   const std::string token = e.GetToken();
   if (e.GetCode() == mu::ecUNASSIGNABLE_TOKEN && !token.empty()) {
     if (std::isdigit(static_cast<unsigned char>(token[0])) || token[0] == '.') {
@@ -41,23 +51,24 @@ std::string describe(const mu::Parser::exception_type& e, const std::string& tex
     if (after < text.size() && text[after] == '(') {
       return "unknown function '" + token + "' in '" + text + "'";
     }
-    return "unknown variable '" + token + "' in '" + text + "' (only x, y, z are defined)";
+    return "unknown variable '" + token + "' in '" + text + "' (only " + defined_text(variables) +
+           ")";
   }
   return "syntax error in '" + text + "': " + e.GetMsg();
 }
 
 /// Compiles `text`; throws InputError. Caller holds compile_mutex().
-std::unique_ptr<Compiled> compile(const std::string& text) {
+std::unique_ptr<Compiled> compile(const std::string& text,
+                                  const std::vector<std::string>& variables) {
   auto c = std::make_unique<Compiled>();
+  double* slots[3] = {&c->x, &c->y, &c->z};
   try {
-    c->parser.DefineVar("x", &c->x);
-    c->parser.DefineVar("y", &c->y);
-    c->parser.DefineVar("z", &c->z);
+    for (std::size_t i = 0; i < variables.size(); ++i) c->parser.DefineVar(variables[i], slots[i]);
     c->parser.DefineConst("pi", std::numbers::pi);
     c->parser.SetExpr(text);
     c->parser.Eval();  // muparser parses lazily: force it now
   } catch (const mu::Parser::exception_type& e) {
-    throw InputError(describe(e, text));
+    throw InputError(describe(e, text, variables));
   }
   return c;
 }
@@ -66,19 +77,28 @@ std::unique_ptr<Compiled> compile(const std::string& text) {
 
 struct Expression::State {
   std::string text;
+  std::vector<std::string> variables;
   std::uint64_t id = 0;
   std::mutex mutex;                                   // guards `per_thread`
   std::vector<std::unique_ptr<Compiled>> per_thread;  // one per evaluating thread
 };
 
-Expression::Expression(const std::string& text) : state_(std::make_shared<State>()) {
+Expression::Expression(const std::string& text) : Expression(text, {"x", "y", "z"}) {}
+
+Expression::Expression(const std::string& text, const std::vector<std::string>& variables)
+    : state_(std::make_shared<State>()) {
+  if (variables.empty() || variables.size() > 3) {
+    throw InputError("an expression needs one to three variables, got " +
+                     std::to_string(variables.size()));
+  }
   if (text.find_first_not_of(" \t\r\n") == std::string::npos) {
     throw InputError("empty expression");
   }
   state_->text = text;
+  state_->variables = variables;
   {
     std::lock_guard lock(compile_mutex());
-    compile(text);  // validate now, so that evaluation never throws
+    compile(text, variables);  // validate now, so that evaluation never throws
   }
   state_->id = next_id.fetch_add(1);
 }
@@ -102,7 +122,7 @@ double Expression::operator()(const Point3& p) const {
       std::unique_ptr<Compiled> fresh;
       {
         std::lock_guard lock(compile_mutex());
-        fresh = compile(state_->text);
+        fresh = compile(state_->text, state_->variables);
       }
       c = fresh.get();
       std::lock_guard lock(state_->mutex);

@@ -1,4 +1,5 @@
-// Infix expressions of x, y, z (muparser), usable as implicit functions and sizing fields.
+// Infix expressions of x, y, z (muparser), usable as implicit functions and sizing fields,
+// or of other variable names (e.g. the parameter t of a curve).
 //
 // Syntax: numbers, x y z, + - * / and ^ (power, right-associative; -x^2 is -(x^2)),
 // parentheses, the constant pi (also _pi, _e), and the muparser built-ins,
@@ -16,6 +17,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "rdmesh/geometry.h"
 
@@ -28,6 +30,16 @@ class Expression {
   /// "unknown variable 'w' in 'x + w' (only x, y, z are defined)", "unknown
   /// function 'foo' ...", or "syntax error in '...': <muparser message>".
   explicit Expression(const std::string& text);
+
+  /// Compiles `text` over the given variables (one to three names), bound in
+  /// order to the x, y, z slots of operator(): Expression("2*t", {"t"}) evaluates
+  /// with e(t, 0, 0) or e.at(t). Errors as above, naming the defined variables
+  /// ("unknown variable 'x' in 'x + t' (only t is defined)"). Throws InputError
+  /// for an empty list or more than three names.
+  Expression(const std::string& text, const std::vector<std::string>& variables);
+
+  /// The value with the first variable set to u (the others 0).
+  double at(double u) const { return (*this)(Point3{u, 0, 0}); }
 
   /// The value at p (NaN or inf are returned as computed).
   double operator()(const Point3& p) const;
