@@ -1,6 +1,8 @@
 // Output: the cells of D|O (label != 0), the facets of D|S (restricted
 // facets), each facet once, oriented towards its side of smaller label, and
 // the edges of D|L in curve order with the corners.
+#include <unordered_map>
+
 #include "refiner.h"
 
 namespace rdmesh::detail {
@@ -47,18 +49,35 @@ TetMesh Refiner::extract_mesh() {
 }
 
 void Refiner::extract_features(TetMesh& mesh) {
+  // Feature vertices are found by position, not by handle: sliver exudation
+  // re-inserts vertices with weights, which changes their handles but never
+  // their positions.
+  struct PointHash {
+    std::size_t operator()(const Point3& p) const {
+      const std::hash<double> h;
+      return h(p.x) ^ (h(p.y) * 0x9e3779b97f4a7c15ULL) ^ (h(p.z) * 0xc2b2ae3d27d4eb4fULL);
+    }
+  };
+  std::unordered_map<Point3, int, PointHash> index_at;
+  for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+    index_at.emplace(mesh.vertices[i], static_cast<int>(i));
+  }
+  auto index_of = [&](const Point3& p) {
+    const auto it = index_at.find(p);
+    return it == index_at.end() ? -1 : it->second;
+  };
   mesh.curves = oracle_.curves();
   mesh.corners = corners_;
-  for (std::size_t i = 0; i < corner_vertices_.size(); ++i) {
-    const int index = corner_vertices_[i]->info().index;
-    if (index < 0) continue;  // not in any tetrahedron: reported by the tests/report
+  for (std::size_t i = 0; i < corners_.size(); ++i) {
+    const int index = index_of(corners_[i].point);
+    if (index < 0) continue;  // in no tetrahedron: the report shows the corner missing
     mesh.corner_vertices.push_back(index);
     mesh.corner_ids.push_back(CornerId{static_cast<int>(i) + 1});
   }
-  for (CurveState& c : curves_) {
-    for (auto a = c.samples.begin(); c.has_next(a); ++a) {
-      const int i0 = a->second.vertex->info().index;
-      const int i1 = std::next(a)->second.vertex->info().index;
+  for (const CurveState& c : curves_) {
+    for (auto a = c.samples.begin(); std::next(a) != c.samples.end(); ++a) {
+      const int i0 = index_of(a->second.position);
+      const int i1 = index_of(std::next(a)->second.position);
       if (i0 < 0 || i1 < 0) {
         ++stats_.unmeshed_feature_edges;
         continue;

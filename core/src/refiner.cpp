@@ -121,7 +121,7 @@ bool Refiner::refine_edge(int curve, CurveState::Arc a) {
   if (v == Vertex_handle()) return false;
   ++stats_.inserted_edge_centers;
   CurveState& c = curves_[curve];
-  const auto mid = c.samples.emplace_hint(b, t, CurveSample{v, {}, 0, 0});
+  const auto mid = c.samples.emplace_hint(b, t, CurveSample{v, to_point3(v->point())});
   create_arc(curve, a, true);
   create_arc(curve, mid, true);
   return true;

@@ -137,7 +137,6 @@ class Refiner {
 
   std::vector<CurveState> curves_;                 ///< index = CurveId - 1
   std::vector<CornerInfo> corners_;                ///< index = CornerId - 1
-  std::vector<Vertex_handle> corner_vertices_;     ///< index = CornerId - 1
   std::vector<std::vector<int>> curve_patches_;    ///< index = CurveId - 1
   std::vector<std::vector<int>> corner_patches_;   ///< index = CornerId - 1
 

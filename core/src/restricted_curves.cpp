@@ -66,8 +66,7 @@ void Refiner::insert_corners_and_curve_samples() {
     return v;
   };
   for (std::size_t i = 0; i < corners_.size(); ++i) {
-    corner_vertices_.push_back(Vertex_handle());
-    corner_vertex[i] = corner_vertices_[i] = insert(corners_[i].point, FeatureDim::kCorner, static_cast<int>(i) + 1, 0);
+    corner_vertex[i] = insert(corners_[i].point, FeatureDim::kCorner, static_cast<int>(i) + 1, 0);
   }
   // Each curve starts with its ends and two interior points (three arcs), so
   // that no arc is the whole of a closed curve.
@@ -82,13 +81,15 @@ void Refiner::insert_corners_and_curve_samples() {
     } else {
       first = corner_vertex.at(c.info.start.value - 1);
     }
-    c.samples[tb].vertex = first;
+    c.samples[tb] = CurveSample{first, to_point3(first->point())};
     for (int k = 1; k <= 2; ++k) {
       const double t = c.curve->parameter_at_length(tb, total * k / 3.0);
       if (t <= tb || t >= te) continue;
-      c.samples[t].vertex = insert(c.curve->point(t), FeatureDim::kCurve, id, t);
+      const Vertex_handle v = insert(c.curve->point(t), FeatureDim::kCurve, id, t);
+      c.samples[t] = CurveSample{v, to_point3(v->point())};
     }
-    c.samples[te].vertex = c.info.closed ? first : corner_vertex.at(c.info.end.value - 1);
+    const Vertex_handle last = c.info.closed ? first : corner_vertex.at(c.info.end.value - 1);
+    c.samples[te] = CurveSample{last, to_point3(last->point())};
   }
 }
 
