@@ -26,7 +26,8 @@ bool is_finite(const Point3& p) {
 
 ImplicitOracle::ImplicitOracle(Box3 box, std::vector<Function> functions,
                                std::vector<SubdomainSpec> subdomains,
-                               std::vector<std::string> function_names, Options options)
+                               std::vector<std::string> function_names, Options options,
+                               std::vector<CurveSpec> curves)
     : box_(box),
       functions_(std::move(functions)),
       function_names_(std::move(function_names)),
@@ -85,6 +86,7 @@ ImplicitOracle::ImplicitOracle(Box3 box, std::vector<Function> functions,
   }
   tolerance_ = 1e-10 * box_.diagonal();
   sample_box();
+  build_features(std::move(curves));
 }
 
 std::uint64_t ImplicitOracle::state_at(const Point3& p, double* values) const {

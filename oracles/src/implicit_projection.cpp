@@ -144,8 +144,4 @@ std::optional<Point3> ImplicitOracle::project_on_crease(const Point3& p, int k, 
   return q;
 }
 
-const Curve& ImplicitOracle::curve(CurveId id) const {
-  throw OracleError("implicit domain has no curve " + std::to_string(id.value));
-}
-
 }  // namespace rdmesh

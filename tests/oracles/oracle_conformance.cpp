@@ -203,6 +203,7 @@ void expect_oracle_conformance(const DomainOracle& oracle, int samples, unsigned
   check_outside_box(oracle, rng, samples);
   check_segments(oracle, rng, samples);
   check_initial_points_and_projection(oracle, rng);
+  expect_feature_conformance(oracle, seed);
 }
 
 }  // namespace rdmesh

@@ -18,7 +18,21 @@ namespace rdmesh {
 ///   answers are deterministic;
 /// - every listed patch has >= 3 initial points, each on the patch: project()
 ///   returns it back, and the labels across the surface at it are the patch sides;
-/// - project() of perturbed initial points lands on the patch, near the original.
+/// - project() of perturbed initial points lands on the patch, near the original;
+/// - the sharp features pass expect_feature_conformance.
 void expect_oracle_conformance(const DomainOracle& oracle, int samples = 2000, unsigned seed = 1);
+
+/// Checks the curves and corners (feature_conformance.cpp):
+/// - curve ids 1..n, corner ids 1..m; a closed curve has corners 0, an open one
+///   valid corners that list it; every corner lists only curves ending there;
+/// - each open curve's end points are its corners' points (within tolerance());
+/// - each curve's patches are listed, and at 8 points of the curve the labels on
+///   a small circle in the normal plane include both sides of each; likewise on
+///   a small sphere around each corner for the corner's patches;
+/// - length is additive, parameter_at_length inverts it, closest returns a
+///   point at least as close as a known one, plane_crossings lie on the plane
+///   and find the crossing through a chosen curve point;
+/// - curves meet only at corners; curve(n + 1) throws.
+void expect_feature_conformance(const DomainOracle& oracle, unsigned seed = 1);
 
 }  // namespace rdmesh

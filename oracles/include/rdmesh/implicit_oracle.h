@@ -14,6 +14,20 @@
 // axis); a boundary thinner than a grid cell may be missed by patches() and
 // initial_points(), never by locate()/intersect().
 //
+// Sharp features (ImplicitCurveSpec, given to the constructor): curves are split
+// where they meet (a curve through another's endpoint, two curves crossing), so
+// that curves only meet at their endpoints; corners are the endpoints of the open
+// pieces, merged within 1e-7 of the box diagonal, ids in order of first
+// appearance (pieces in declaration order, start before end). Each piece's
+// patches are found by probing labels on small circles (radius 1e-5 of the box
+// diagonal, 32 directions) around 8 of its points in the normal plane: each pair
+// of adjacent different labels gives patch_between(a, b). A corner's patches are
+// the union of its curves' patches. curve(id) returns the piece on its own
+// parameter range [t_begin, t_end] (a sub-range of the declared range; for a
+// closed curve split at its meeting points, one piece may wrap past the declared
+// end, t_end > declared t_end meaning t - period); its end points are exactly its
+// corners' points.
+//
 // Thread safety: every query is const and touches no shared mutable state; the
 // functions themselves must be callable concurrently (the expression functions of
 // rdmesh/expression.h are).
@@ -21,6 +35,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -34,6 +49,15 @@ struct ImplicitOracleOptions {
   /// Grid cells per box axis used to discover patches, their connected
   /// components and the initial points. Cost: (n+1)^3 evaluations of every function.
   int sampling_resolution = 48;
+};
+
+/// A sharp-feature curve declared to ImplicitOracle: `curve` restricted to
+/// [t_begin, t_end]. Closed when point(t_begin) and point(t_end) are within the
+/// corner merge distance (1e-7 of the box diagonal).
+struct ImplicitCurveSpec {
+  std::string name;  ///< empty: "curve_<index from 1>"
+  std::shared_ptr<const Curve> curve;
+  double t_begin = 0, t_end = 1;
 };
 
 class ImplicitOracle final : public DomainOracle {
@@ -50,6 +74,7 @@ class ImplicitOracle final : public DomainOracle {
   };
 
   using Options = ImplicitOracleOptions;
+  using CurveSpec = ImplicitCurveSpec;
 
   /// At most this many functions (the sign pattern is kept in one 64-bit word).
   static constexpr int kMaxFunctions = 63;
@@ -61,9 +86,13 @@ class ImplicitOracle final : public DomainOracle {
   /// function, too many functions, a null function, bad indices, a subdomain with
   /// neither inside nor outside functions, an empty or NaN box, a bad sampling
   /// resolution, and a subdomain that matches no sample point of the box.
+  /// `curves` declares the sharp features (see the file comment); InputError
+  /// "curve 'NAME': ..." for a null curve, a bad range, a curve leaving the box
+  /// or not on the domain boundary (fewer than two labels around one of its points).
   ImplicitOracle(Box3 box, std::vector<Function> functions,
                  std::vector<SubdomainSpec> subdomains = {},
-                 std::vector<std::string> function_names = {}, Options options = {});
+                 std::vector<std::string> function_names = {}, Options options = {},
+                 std::vector<CurveSpec> curves = {});
 
   Box3 bounding_box() const override { return box_; }
   SubdomainId locate(const Point3& p) const override;
@@ -84,9 +113,11 @@ class ImplicitOracle final : public DomainOracle {
   std::optional<Point3> project(const Point3& p, PatchId patch) const override;
   /// 1e-10 times the box diagonal.
   double tolerance() const override { return tolerance_; }
-  /// Sharp features are not declared yet: no corners, no curves.
-  std::vector<CornerInfo> corners() const override { return {}; }
-  std::vector<CurveInfo> curves() const override { return {}; }
+  /// Corners: endpoints of the open curve pieces (empty without curves).
+  std::vector<CornerInfo> corners() const override { return corner_infos_; }
+  /// Curve pieces after splitting at meeting points, in declaration order.
+  std::vector<CurveInfo> curves() const override { return curve_infos_; }
+  /// The piece `id` (throws OracleError for an unknown id).
   const Curve& curve(CurveId id) const override;
 
   /// The id of the patch between labels a != b (in any order), listed or not.
@@ -106,6 +137,9 @@ class ImplicitOracle final : public DomainOracle {
   std::optional<Point3> project_on_crease(const Point3& p, int k, int l, int a, int b) const;
   Point3 gradient(int k, const Point3& p) const;
   void sample_box();
+  void build_features(std::vector<CurveSpec> specs);  // implicit_features.cpp
+  std::vector<PatchId> patches_around(const Curve& curve, double t_begin, double t_end,
+                                      const std::string& name) const;
 
   Box3 box_;
   std::vector<Function> functions_;
@@ -117,6 +151,9 @@ class ImplicitOracle final : public DomainOracle {
   std::vector<std::vector<Point3>> initial_points_;  // indexed by patch id
   Options options_;
   double tolerance_ = 0;
+  std::vector<CurveInfo> curve_infos_;
+  std::vector<CornerInfo> corner_infos_;
+  std::vector<std::shared_ptr<const Curve>> curve_pieces_;  // indexed by curve id - 1
 };
 
 }  // namespace rdmesh
