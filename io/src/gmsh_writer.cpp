@@ -1,10 +1,15 @@
 // Gmsh MSH 4.1 ASCII writer.
 //
-// Layout: one elementary volume per subdomain and one elementary surface per
-// patch, each carrying the physical group of the same tag and name. All nodes
-// go in one $Nodes block classified on the first volume (allowed by the format:
-// a node's entity only matters for CAD reparametrisation, which we do not use).
+// Layout: one elementary volume per subdomain, one elementary surface per
+// patch, one elementary curve per curve and one elementary point per corner,
+// each carrying the physical group of the same tag and name. All nodes go in
+// one $Nodes block classified on the first volume (allowed by the format: a
+// node's entity only matters for CAD reparametrisation, which we do not use).
+// Entity topology: a volume is bounded by the patches of TetMesh::patches that
+// touch it, a surface by the curves whose CurveInfo::patches list it, an open
+// curve by its start (+) and end (-) corner points.
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <ostream>
 #include <string>
@@ -50,12 +55,50 @@ std::string bounding_box(const TetMesh& mesh, const std::vector<std::array<int, 
   return s;
 }
 
-void write_physical_names(std::ostream& out, const std::vector<Label>& volumes,
-                          const std::vector<Label>& surfaces) {
-  out << "$PhysicalNames\n" << volumes.size() + surfaces.size() << '\n';
-  for (const Label& l : volumes) out << "3 " << l.id << ' ' << quoted_name(l, "subdomain_") << '\n';
-  for (const Label& l : surfaces) out << "2 " << l.id << ' ' << quoted_name(l, "patch_") << '\n';
+/// The labels and element groups of one dimension.
+struct Level {
+  std::vector<Label> labels;
+  std::vector<std::vector<int>> groups;  ///< element indices per label
+};
+
+Level make_level(std::vector<Label> labels, const std::vector<int>& element_labels) {
+  Level level{std::move(labels), {}};
+  level.groups = io_detail::group_by_label(element_labels, level.labels);
+  return level;
+}
+
+/// The four levels, indexed by dimension (0 = corners ... 3 = subdomains).
+using Levels = std::array<Level, 4>;
+
+void write_physical_names(std::ostream& out, const Levels& levels) {
+  out << "$PhysicalNames\n"
+      << levels[3].labels.size() + levels[2].labels.size() + levels[1].labels.size() +
+             levels[0].labels.size()
+      << '\n';
+  // Volumes and surfaces first: a mesh without features keeps its historical layout.
+  const char* prefixes[4] = {"corner_", "curve_", "patch_", "subdomain_"};
+  for (int dim : {3, 2, 1, 0}) {
+    for (const Label& l : levels[dim].labels) {
+      out << dim << ' ' << l.id << ' ' << quoted_name(l, prefixes[dim]) << '\n';
+    }
+  }
   out << "$EndPhysicalNames\n";
+}
+
+/// True when the sorted `labels` contain `id`.
+bool has_label(const std::vector<Label>& labels, int id) {
+  auto it = std::lower_bound(labels.begin(), labels.end(), id,
+                             [](const Label& l, int v) { return l.id < v; });
+  return it != labels.end() && it->id == id;
+}
+
+/// "n t1 t2 ..." of the sorted, unique tags.
+std::string tag_list(std::vector<int> tags) {
+  std::sort(tags.begin(), tags.end());
+  tags.erase(std::unique(tags.begin(), tags.end()), tags.end());
+  std::string s = std::to_string(tags.size());
+  for (int t : tags) s += ' ' + std::to_string(t);
+  return s;
 }
 
 /// Patches bounding subdomain `id` according to TetMesh::patches.
@@ -65,26 +108,76 @@ std::vector<int> bounding_patches(const TetMesh& mesh, int id) {
     if (p.id.value > 0 && (p.side_a.value == id || p.side_b.value == id))
       tags.push_back(p.id.value);
   }
-  std::sort(tags.begin(), tags.end());
-  tags.erase(std::unique(tags.begin(), tags.end()), tags.end());
   return tags;
 }
 
-void write_entities(std::ostream& out, const TetMesh& mesh, const std::vector<Label>& volumes,
-                    const std::vector<std::vector<int>>& tets_of,
-                    const std::vector<Label>& surfaces,
-                    const std::vector<std::vector<int>>& triangles_of) {
-  out << "$Entities\n0 0 " << surfaces.size() << ' ' << volumes.size() << '\n';
-  for (std::size_t k = 0; k < surfaces.size(); ++k) {
-    out << surfaces[k].id << ' ' << bounding_box(mesh, mesh.triangles, triangles_of[k]) << "1 "
-        << surfaces[k].id << " 0\n";
+/// Curve entities bounding patch `id`: the listed curves that name it as incident.
+std::vector<int> bounding_curves(const TetMesh& mesh, int id, const std::vector<Label>& curves) {
+  std::vector<int> tags;
+  for (const CurveInfo& c : mesh.curves) {
+    if (!has_label(curves, c.id.value)) continue;
+    for (PatchId p : c.patches) {
+      if (p.value == id) tags.push_back(c.id.value);
+    }
   }
-  for (std::size_t k = 0; k < volumes.size(); ++k) {
-    std::vector<int> bounds = bounding_patches(mesh, volumes[k].id);
-    out << volumes[k].id << ' ' << bounding_box(mesh, mesh.tets, tets_of[k]) << "1 "
-        << volumes[k].id << ' ' << bounds.size();
-    for (int b : bounds) out << ' ' << b;
-    out << '\n';
+  return tags;
+}
+
+/// "n start -end" for an open listed curve whose corners are point entities; "0" otherwise.
+std::string bounding_points(const TetMesh& mesh, int id, const std::vector<Label>& points) {
+  auto info = std::find_if(mesh.curves.begin(), mesh.curves.end(),
+                           [&](const CurveInfo& c) { return c.id.value == id; });
+  std::vector<int> tags;
+  if (info != mesh.curves.end() && !info->closed) {
+    if (has_label(points, info->start.value)) tags.push_back(info->start.value);
+    if (has_label(points, info->end.value)) tags.push_back(-info->end.value);
+  }
+  std::string s = std::to_string(tags.size());
+  for (int t : tags) s += ' ' + std::to_string(t);
+  return s;
+}
+
+/// "x y z " of corner `id`: its mesh vertex, else its listed point, else the origin.
+std::string corner_position(const TetMesh& mesh, int id, const std::vector<int>& group) {
+  Point3 p;
+  if (!group.empty()) {
+    p = mesh.vertices[mesh.corner_vertices[group.front()]];
+  } else {
+    for (const CornerInfo& c : mesh.corners) {
+      if (c.id.value == id) p = c.point;
+    }
+  }
+  std::string s;
+  for (double c : {p.x, p.y, p.z}) {
+    append_double(s, c);
+    s += ' ';
+  }
+  return s;
+}
+
+void write_entities(std::ostream& out, const TetMesh& mesh, const Levels& levels) {
+  const Level &points = levels[0], &curves = levels[1], &surfaces = levels[2], &volumes = levels[3];
+  out << "$Entities\n"
+      << points.labels.size() << ' ' << curves.labels.size() << ' ' << surfaces.labels.size() << ' '
+      << volumes.labels.size() << '\n';
+  for (std::size_t k = 0; k < points.labels.size(); ++k) {
+    const int id = points.labels[k].id;
+    out << id << ' ' << corner_position(mesh, id, points.groups[k]) << "1 " << id << '\n';
+  }
+  for (std::size_t k = 0; k < curves.labels.size(); ++k) {
+    const int id = curves.labels[k].id;
+    out << id << ' ' << bounding_box(mesh, mesh.edges, curves.groups[k]) << "1 " << id << ' '
+        << bounding_points(mesh, id, points.labels) << '\n';
+  }
+  for (std::size_t k = 0; k < surfaces.labels.size(); ++k) {
+    const int id = surfaces.labels[k].id;
+    out << id << ' ' << bounding_box(mesh, mesh.triangles, surfaces.groups[k]) << "1 " << id << ' '
+        << tag_list(bounding_curves(mesh, id, curves.labels)) << '\n';
+  }
+  for (std::size_t k = 0; k < volumes.labels.size(); ++k) {
+    const int id = volumes.labels[k].id;
+    out << id << ' ' << bounding_box(mesh, mesh.tets, volumes.groups[k]) << "1 " << id << ' '
+        << tag_list(bounding_patches(mesh, id)) << '\n';
   }
   out << "$EndEntities\n";
 }
@@ -122,14 +215,14 @@ void write_nodes(std::ostream& out, const TetMesh& mesh, const std::vector<Label
 /// One element block per non-empty group; `next_tag` is the running 1-based element tag.
 template <std::size_t N>
 void write_element_blocks(std::ostream& out, int dim, int gmsh_type,
-                          const std::vector<std::array<int, N>>& elements,
-                          const std::vector<Label>& labels,
-                          const std::vector<std::vector<int>>& groups, long long& next_tag) {
+                          const std::vector<std::array<int, N>>& elements, const Level& level,
+                          long long& next_tag) {
   std::string line;
-  for (std::size_t k = 0; k < labels.size(); ++k) {
-    if (groups[k].empty()) continue;
-    out << dim << ' ' << labels[k].id << ' ' << gmsh_type << ' ' << groups[k].size() << '\n';
-    for (int e : groups[k]) {
+  for (std::size_t k = 0; k < level.labels.size(); ++k) {
+    if (level.groups[k].empty()) continue;
+    out << dim << ' ' << level.labels[k].id << ' ' << gmsh_type << ' ' << level.groups[k].size()
+        << '\n';
+    for (int e : level.groups[k]) {
       line.clear();
       append_int(line, next_tag++);
       for (int v : elements[e]) {
@@ -151,24 +244,33 @@ std::size_t count_non_empty(const std::vector<std::vector<int>>& groups) {
 
 void write_gmsh41(const TetMesh& mesh, std::ostream& out) {
   io_detail::check_mesh(mesh);
-  const std::vector<Label> volumes = io_detail::subdomain_labels(mesh);
-  const std::vector<Label> surfaces = io_detail::patch_labels(mesh);
-  const auto tets_of = io_detail::group_by_label(io_detail::tet_label_values(mesh), volumes);
-  const auto triangles_of =
-      io_detail::group_by_label(io_detail::triangle_label_values(mesh), surfaces);
+  const Levels levels{
+      make_level(io_detail::corner_labels(mesh), io_detail::corner_label_values(mesh)),
+      make_level(io_detail::curve_labels(mesh), io_detail::edge_label_values(mesh)),
+      make_level(io_detail::patch_labels(mesh), io_detail::triangle_label_values(mesh)),
+      make_level(io_detail::subdomain_labels(mesh), io_detail::tet_label_values(mesh))};
 
   out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
-  write_physical_names(out, volumes, surfaces);
-  write_entities(out, mesh, volumes, tets_of, surfaces, triangles_of);
-  write_nodes(out, mesh, volumes);
+  write_physical_names(out, levels);
+  write_entities(out, mesh, levels);
+  write_nodes(out, mesh, levels[3].labels);
 
-  const std::size_t num_elements = mesh.tets.size() + mesh.triangles.size();
+  std::vector<std::array<int, 1>> corner_elements;
+  corner_elements.reserve(mesh.corner_vertices.size());
+  for (int v : mesh.corner_vertices) corner_elements.push_back({v});
+  const std::size_t num_elements =
+      mesh.tets.size() + mesh.triangles.size() + mesh.edges.size() + corner_elements.size();
+  std::size_t num_blocks = 0;
+  for (const Level& level : levels) num_blocks += count_non_empty(level.groups);
   out << "$Elements\n"
-      << count_non_empty(tets_of) + count_non_empty(triangles_of) << ' ' << num_elements << ' '
-      << (num_elements ? 1 : 0) << ' ' << num_elements << '\n';
+      << num_blocks << ' ' << num_elements << ' ' << (num_elements ? 1 : 0) << ' ' << num_elements
+      << '\n';
   long long next_tag = 1;
-  write_element_blocks(out, 3, 4, mesh.tets, volumes, tets_of, next_tag);
-  write_element_blocks(out, 2, 2, mesh.triangles, surfaces, triangles_of, next_tag);
+  // Tets and triangles first: a mesh without features keeps its element tags.
+  write_element_blocks(out, 3, 4, mesh.tets, levels[3], next_tag);
+  write_element_blocks(out, 2, 2, mesh.triangles, levels[2], next_tag);
+  write_element_blocks(out, 1, 1, mesh.edges, levels[1], next_tag);
+  write_element_blocks(out, 0, 15, corner_elements, levels[0], next_tag);
   out << "$EndElements\n";
   if (!out) throw OutputError("write_gmsh41: the output stream failed");
 }

@@ -23,6 +23,51 @@ void check_indices(const std::vector<std::array<int, N>>& elements, std::size_t 
   }
 }
 
+/// Throws unless labels.size() == count and every label is >= 1.
+template <class LabelT>
+void check_labels(const std::vector<LabelT>& labels, std::size_t count, const char* elements,
+                  const char* element, const char* label) {
+  if (labels.size() != count) {
+    throw InternalError("TetMesh: " + std::to_string(count) + " " + elements + " but " +
+                        std::to_string(labels.size()) + " " + label + " labels");
+  }
+  for (std::size_t e = 0; e < labels.size(); ++e) {
+    if (labels[e].value <= 0) {
+      throw InternalError("TetMesh: " + std::string(element) + " " + std::to_string(e) + " has " +
+                          label + " id " + std::to_string(labels[e].value) + " (ids start at 1)");
+    }
+  }
+}
+
+/// The 1D and 0D levels: edge and corner arrays, their labels, no degenerate
+/// edge, no vertex or corner listed twice.
+void check_features(const TetMesh& mesh) {
+  check_labels(mesh.edge_curve, mesh.edges.size(), "feature edges", "feature edge", "curve");
+  check_labels(mesh.corner_ids, mesh.corner_vertices.size(), "corner vertices", "corner vertex",
+               "corner");
+  check_indices(mesh.edges, mesh.vertices.size(), "feature edge");
+  for (std::size_t e = 0; e < mesh.edges.size(); ++e) {
+    if (mesh.edges[e][0] == mesh.edges[e][1]) {
+      throw InternalError("TetMesh: feature edge " + std::to_string(e) + " joins vertex " +
+                          std::to_string(mesh.edges[e][0]) + " to itself");
+    }
+  }
+  std::vector<std::array<int, 1>> corners;
+  for (int v : mesh.corner_vertices) corners.push_back({v});
+  check_indices(corners, mesh.vertices.size(), "corner vertex");
+  std::map<int, std::size_t> vertex_seen, id_seen;
+  for (std::size_t c = 0; c < corners.size(); ++c) {
+    if (!vertex_seen.emplace(mesh.corner_vertices[c], c).second) {
+      throw InternalError("TetMesh: vertex " + std::to_string(mesh.corner_vertices[c]) +
+                          " is listed twice in corner_vertices");
+    }
+    if (!id_seen.emplace(mesh.corner_ids[c].value, c).second) {
+      throw InternalError("TetMesh: corner " + std::to_string(mesh.corner_ids[c].value) +
+                          " is at two vertices");
+    }
+  }
+}
+
 std::vector<Label> merge_labels(std::map<int, std::string> named, const std::vector<int>& used) {
   for (int id : used) named.try_emplace(id);
   std::vector<Label> labels;
@@ -64,6 +109,12 @@ void check_mesh(const TetMesh& mesh) {
   }
   check_indices(mesh.tets, mesh.vertices.size(), "tet");
   check_indices(mesh.triangles, mesh.vertices.size(), "triangle");
+  check_features(mesh);
+}
+
+bool has_features(const TetMesh& mesh) {
+  return !mesh.edges.empty() || !mesh.corner_vertices.empty() || !mesh.curves.empty() ||
+         !mesh.corners.empty();
 }
 
 std::vector<int> tet_label_values(const TetMesh& mesh) {
@@ -80,6 +131,20 @@ std::vector<int> triangle_label_values(const TetMesh& mesh) {
   return v;
 }
 
+std::vector<int> edge_label_values(const TetMesh& mesh) {
+  std::vector<int> v;
+  v.reserve(mesh.edge_curve.size());
+  for (CurveId c : mesh.edge_curve) v.push_back(c.value);
+  return v;
+}
+
+std::vector<int> corner_label_values(const TetMesh& mesh) {
+  std::vector<int> v;
+  v.reserve(mesh.corner_ids.size());
+  for (CornerId c : mesh.corner_ids) v.push_back(c.value);
+  return v;
+}
+
 std::vector<Label> subdomain_labels(const TetMesh& mesh) {
   std::map<int, std::string> named;
   for (const SubdomainInfo& s : mesh.subdomains) named.emplace(s.id.value, s.name);
@@ -90,6 +155,18 @@ std::vector<Label> patch_labels(const TetMesh& mesh) {
   std::map<int, std::string> named;
   for (const PatchInfo& p : mesh.patches) named.emplace(p.id.value, p.name);
   return merge_labels(std::move(named), triangle_label_values(mesh));
+}
+
+std::vector<Label> curve_labels(const TetMesh& mesh) {
+  std::map<int, std::string> named;
+  for (const CurveInfo& c : mesh.curves) named.emplace(c.id.value, c.name);
+  return merge_labels(std::move(named), edge_label_values(mesh));
+}
+
+std::vector<Label> corner_labels(const TetMesh& mesh) {
+  std::map<int, std::string> named;
+  for (const CornerInfo& c : mesh.corners) named.emplace(c.id.value, std::string());
+  return merge_labels(std::move(named), corner_label_values(mesh));
 }
 
 std::vector<std::vector<int>> group_by_label(const std::vector<int>& element_labels,

@@ -11,9 +11,14 @@
 namespace rdmesh::io_detail {
 
 /// Throws InternalError unless the label arrays match the element arrays,
-/// every label is >= 1, every coordinate is finite and every element index
-/// refers to an existing vertex.
+/// every label is >= 1, every coordinate is finite, every element index
+/// refers to an existing vertex, no feature edge joins a vertex to itself and
+/// no vertex or corner id appears twice in the corner lists.
 void check_mesh(const TetMesh& mesh);
+
+/// True when the mesh has any 1D or 0D data (feature edges, corner vertices,
+/// listed curves or corners); writers emit the feature sections only then.
+bool has_features(const TetMesh& mesh);
 
 /// A label (subdomain or patch id) with its name.
 struct Label {
@@ -28,6 +33,13 @@ std::vector<Label> subdomain_labels(const TetMesh& mesh);
 /// Patches listed in mesh.patches plus those used by a triangle, sorted by id.
 std::vector<Label> patch_labels(const TetMesh& mesh);
 
+/// Curves listed in mesh.curves plus those used by a feature edge, sorted by id.
+std::vector<Label> curve_labels(const TetMesh& mesh);
+
+/// Corners listed in mesh.corners plus those of corner_vertices, sorted by id
+/// (names are empty: corners have none).
+std::vector<Label> corner_labels(const TetMesh& mesh);
+
 /// Element indices grouped by label: result[k] lists the elements whose label
 /// is labels[k].id, in input order.
 std::vector<std::vector<int>> group_by_label(const std::vector<int>& element_labels,
@@ -36,6 +48,9 @@ std::vector<std::vector<int>> group_by_label(const std::vector<int>& element_lab
 /// The subdomain ids of the tets / patch ids of the triangles as plain ints.
 std::vector<int> tet_label_values(const TetMesh& mesh);
 std::vector<int> triangle_label_values(const TetMesh& mesh);
+/// The curve ids of the feature edges / corner ids of the corner vertices as plain ints.
+std::vector<int> edge_label_values(const TetMesh& mesh);
+std::vector<int> corner_label_values(const TetMesh& mesh);
 
 /// Appends `v` in the shortest form that reads back to the same double.
 inline void append_double(std::string& s, double v) {

@@ -1,9 +1,16 @@
 // VTK XML UnstructuredGrid (.vtu) writer, ASCII data arrays.
 //
 // Cells: all tetrahedra (VTK_TETRA = 10) in input order, then all triangles
-// (VTK_TRIANGLE = 5). VTK's tetra ordering matches ours (positive volume).
+// (VTK_TRIANGLE = 5), then the feature edges (VTK_LINE = 3) and the corner
+// vertices (VTK_VERTEX = 1). VTK's tetra ordering matches ours (positive volume).
+// The "curve" and "corner" cell arrays are written only for meshes with features,
+// so that a mesh without them gives the same file as before they existed.
+#include <array>
+#include <charconv>
 #include <ostream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "mesh_labels.h"
 #include "rdmesh/errors.h"
@@ -17,6 +24,41 @@ using io_detail::append_int;
 
 constexpr int kVtkTetra = 10;
 constexpr int kVtkTriangle = 5;
+constexpr int kVtkLine = 3;
+constexpr int kVtkVertex = 1;
+
+/// Streams integers, `per_line` to a line, the last one followed by a newline.
+/// Buffers in a fixed array (flushed by the destructor at the latest).
+class IntWriter {
+ public:
+  IntWriter(std::ostream& out, std::size_t count, std::size_t per_line)
+      : out_(out), count_(count), per_line_(per_line) {}
+  IntWriter(const IntWriter&) = delete;
+  IntWriter& operator=(const IntWriter&) = delete;
+  ~IntWriter() { flush(); }
+
+  void add(long long v) {
+    if (size_ + 32 > buffer_.size()) flush();
+    const auto res = std::to_chars(buffer_.data() + size_, buffer_.data() + buffer_.size(), v);
+    size_ = static_cast<std::size_t>(res.ptr - buffer_.data());
+    ++written_;
+    buffer_[size_++] = written_ % per_line_ == 0 || written_ == count_ ? '\n' : ' ';
+  }
+  /// Adds `n` copies of `v`.
+  void repeat(long long v, std::size_t n) {
+    for (std::size_t i = 0; i < n; ++i) add(v);
+  }
+
+ private:
+  void flush() {
+    out_.write(buffer_.data(), static_cast<std::streamsize>(size_));
+    size_ = 0;
+  }
+
+  std::ostream& out_;
+  std::size_t count_, per_line_, written_ = 0, size_ = 0;
+  std::array<char, 4096> buffer_{};
+};
 
 /// Writes `count` values produced by `value(i)`, several per line.
 template <class F>
@@ -52,41 +94,79 @@ void write_points(std::ostream& out, const TetMesh& mesh) {
   out << "      </Points>\n";
 }
 
+std::size_t num_cells(const TetMesh& mesh) {
+  return mesh.tets.size() + mesh.triangles.size() + mesh.edges.size() + mesh.corner_vertices.size();
+}
+
 void write_cells(std::ostream& out, const TetMesh& mesh) {
-  const std::size_t nt = mesh.tets.size(), nf = mesh.triangles.size();
+  const std::size_t nt = mesh.tets.size(), nf = mesh.triangles.size(), ne = mesh.edges.size(),
+                    nc = mesh.corner_vertices.size();
   out << "      <Cells>\n";
   open_array(out, "Int64", "connectivity");
-  write_values(out, 4 * nt + 3 * nf, 12, [&](std::string& s, std::size_t i) {
-    append_int(s, i < 4 * nt ? mesh.tets[i / 4][i % 4]
-                             : mesh.triangles[(i - 4 * nt) / 3][(i - 4 * nt) % 3]);
-  });
+  {
+    IntWriter w(out, 4 * nt + 3 * nf + 2 * ne + nc, 12);
+    for (const auto& t : mesh.tets) {
+      for (int v : t) w.add(v);
+    }
+    for (const auto& f : mesh.triangles) {
+      for (int v : f) w.add(v);
+    }
+    for (const auto& e : mesh.edges) {
+      for (int v : e) w.add(v);
+    }
+    for (int v : mesh.corner_vertices) w.add(v);
+  }
   close_array(out);
   open_array(out, "Int64", "offsets");
-  write_values(out, nt + nf, 12, [&](std::string& s, std::size_t i) {
-    append_int(s, static_cast<long long>(i < nt ? 4 * (i + 1) : 4 * nt + 3 * (i + 1 - nt)));
-  });
+  {
+    IntWriter w(out, num_cells(mesh), 12);
+    long long offset = 0;
+    for (auto [count, size] : {std::pair{nt, 4}, {nf, 3}, {ne, 2}, {nc, 1}}) {
+      for (std::size_t i = 0; i < count; ++i) w.add(offset += size);
+    }
+  }
   close_array(out);
   open_array(out, "UInt8", "types");
-  write_values(out, nt + nf, 24, [&](std::string& s, std::size_t i) {
-    append_int(s, i < nt ? kVtkTetra : kVtkTriangle);
-  });
+  {
+    IntWriter w(out, num_cells(mesh), 24);
+    w.repeat(kVtkTetra, nt);
+    w.repeat(kVtkTriangle, nf);
+    w.repeat(kVtkLine, ne);
+    w.repeat(kVtkVertex, nc);
+  }
   close_array(out);
   out << "      </Cells>\n";
 }
 
+/// One Int32 cell array: zero on every cell except those of block `which`
+/// (0 tets, 1 triangles, 2 edges, 3 corners), which get `labels`.
+template <class LabelT>
+void write_label_array(std::ostream& out, const TetMesh& mesh, const char* name, int which,
+                       const std::vector<LabelT>& labels) {
+  const std::size_t sizes[4] = {mesh.tets.size(), mesh.triangles.size(), mesh.edges.size(),
+                                mesh.corner_vertices.size()};
+  open_array(out, "Int32", name);
+  {
+    IntWriter w(out, num_cells(mesh), 24);
+    for (int block = 0; block < 4; ++block) {
+      if (block == which) {
+        for (const LabelT& l : labels) w.add(l.value);
+      } else {
+        w.repeat(0, sizes[block]);
+      }
+    }
+  }
+  close_array(out);
+}
+
 void write_cell_data(std::ostream& out, const TetMesh& mesh) {
-  const std::size_t nt = mesh.tets.size(), nf = mesh.triangles.size();
   out << "      <CellData Scalars=\"subdomain\">\n";
-  open_array(out, "Int32", "subdomain");
-  write_values(out, nt + nf, 24, [&](std::string& s, std::size_t i) {
-    append_int(s, i < nt ? mesh.tet_subdomain[i].value : 0);
-  });
-  close_array(out);
-  open_array(out, "Int32", "patch");
-  write_values(out, nt + nf, 24, [&](std::string& s, std::size_t i) {
-    append_int(s, i < nt ? 0 : mesh.triangle_patch[i - nt].value);
-  });
-  close_array(out);
+  write_label_array(out, mesh, "subdomain", 0, mesh.tet_subdomain);
+  write_label_array(out, mesh, "patch", 1, mesh.triangle_patch);
+  if (io_detail::has_features(mesh)) {
+    write_label_array(out, mesh, "curve", 2, mesh.edge_curve);
+    write_label_array(out, mesh, "corner", 3, mesh.corner_ids);
+  }
   out << "      </CellData>\n";
 }
 
@@ -99,7 +179,7 @@ void write_vtu(const TetMesh& mesh, std::ostream& out) {
          "header_type=\"UInt64\">\n"
          "  <UnstructuredGrid>\n"
       << "    <Piece NumberOfPoints=\"" << mesh.vertices.size() << "\" NumberOfCells=\""
-      << mesh.tets.size() + mesh.triangles.size() << "\">\n";
+      << num_cells(mesh) << "\">\n";
   write_points(out, mesh);
   write_cells(out, mesh);
   write_cell_data(out, mesh);

@@ -3,7 +3,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <map>
+#include <string>
 #include <vector>
 
 #include "rdmesh/mesh_measures.h"
@@ -78,6 +80,84 @@ inline TetMesh two_cube_mesh(double s = 0.1) {
   m.patches = {{PatchId(1), "left skin", kOutside, SubdomainId(1)},
                {PatchId(2), "right skin", kOutside, SubdomainId(2)},
                {PatchId(3), "interface", SubdomainId(1), SubdomainId(2)}};
+  return m;
+}
+
+/// two_cube_mesh(s) with sharp features: the 12 edges of the box as open
+/// curves between its 8 corners, plus the rim of the interface square x = s as
+/// a closed curve.
+///   - corners 1..8: box corner (i, j, k), i, j, k in {0, 1} (scaled by 2s, s, s),
+///     has id 1 + i + 2j + 4k;
+///   - curves 1..4 "x<j><k>": along x from corner (0,j,k) to (1,j,k), two mesh
+///     edges each (through the middle vertex), incident to patches 1 and 2;
+///   - curves 5..8 "y<i><k>" and 9..12 "z<i><j>": one mesh edge each, incident to
+///     patch 1 (i = 0) or 2 (i = 1);
+///   - curve 13 "rim": closed, parameter [0, 4], the 4 edges of the interface
+///     square, incident to patches 1, 2 and 3.
+/// Every open curve has parameter range [0, 1]; edges follow the parameter.
+inline TetMesh featured_two_cube_mesh(double s = 0.1) {
+  TetMesh m = two_cube_mesh(s);
+  auto vertex = [](int i, int j, int k) { return i + 3 * j + 6 * k; };                // i in 0..2
+  auto corner = [](int i, int j, int k) { return CornerId(1 + i + 2 * j + 4 * k); };  // i in 0..1
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 2; ++i) {
+        m.corner_vertices.push_back(vertex(2 * i, j, k));
+        m.corner_ids.push_back(corner(i, j, k));
+        m.corners.push_back({corner(i, j, k), m.vertices[vertex(2 * i, j, k)], {}, {}});
+      }
+  auto add_curve = [&](const std::string& name, std::vector<int> chain, CornerId a, CornerId b,
+                       std::vector<PatchId> patches) {
+    const CurveId id(static_cast<int>(m.curves.size()) + 1);
+    for (std::size_t e = 0; e + 1 < chain.size(); ++e) {
+      m.edges.push_back({chain[e], chain[e + 1]});
+      m.edge_curve.push_back(id);
+    }
+    const bool closed = a.value == 0;
+    m.curves.push_back({id, name, closed, 0.0, closed ? 4.0 : 1.0, a, b, patches});
+    for (CornerId c : {a, b}) {
+      if (c.value == 0) continue;
+      CornerInfo& info = m.corners[static_cast<std::size_t>(c.value - 1)];
+      info.curves.push_back(id);
+      info.patches.insert(info.patches.end(), patches.begin(), patches.end());
+    }
+  };
+  const std::string digits = "01";
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 2; ++j)
+      add_curve(std::string("x") + digits[j] + digits[k],
+                {vertex(0, j, k), vertex(1, j, k), vertex(2, j, k)}, corner(0, j, k),
+                corner(1, j, k), {PatchId(1), PatchId(2)});
+  for (int k = 0; k < 2; ++k)
+    for (int i = 0; i < 2; ++i)
+      add_curve(std::string("y") + digits[i] + digits[k],
+                {vertex(2 * i, 0, k), vertex(2 * i, 1, k)}, corner(i, 0, k), corner(i, 1, k),
+                {PatchId(1 + i)});
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 2; ++i)
+      add_curve(std::string("z") + digits[i] + digits[j],
+                {vertex(2 * i, j, 0), vertex(2 * i, j, 1)}, corner(i, j, 0), corner(i, j, 1),
+                {PatchId(1 + i)});
+  add_curve("rim",
+            {vertex(1, 0, 0), vertex(1, 1, 0), vertex(1, 1, 1), vertex(1, 0, 1), vertex(1, 0, 0)},
+            CornerId(0), CornerId(0), {PatchId(1), PatchId(2), PatchId(3)});
+  for (CornerInfo& c : m.corners) {
+    std::sort(c.patches.begin(), c.patches.end());
+    c.patches.erase(std::unique(c.patches.begin(), c.patches.end()), c.patches.end());
+  }
+  return m;
+}
+
+/// `m` with every vertex moved by a small irregular amount, so that coordinates
+/// are not short decimals (tests full precision); vertex 0 is pulled out
+/// further. Keeps the orientation of the two-cube fixtures.
+inline TetMesh jittered(TetMesh m) {
+  for (std::size_t i = 0; i < m.vertices.size(); ++i) {
+    const double k = static_cast<double>(i) + 1;
+    m.vertices[i] =
+        m.vertices[i] + 1e-3 * Point3{std::sin(k), std::cos(2 * k), std::sin(3 * k) / 3};
+  }
+  m.vertices[0].x = -1.0 / 3.0;
   return m;
 }
 
