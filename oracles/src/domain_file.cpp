@@ -12,6 +12,8 @@
 #include "rdmesh/errors.h"
 #include "rdmesh/expression.h"
 #include "rdmesh/implicit_oracle.h"
+#include "rdmesh/parametric_curve.h"
+#include "rdmesh/polyline_curve.h"
 
 namespace rdmesh {
 
@@ -23,6 +25,7 @@ constexpr const char* kTopKeys[] = {"description",    "bbox",        "functions"
                                     "curves",         "size",        "facet_size", "cell_size",
                                     "facet_distance", "facet_angle", "radius_edge"};
 constexpr const char* kSubdomainKeys[] = {"name", "inside", "outside"};
+constexpr const char* kCurveKeys[] = {"name", "x", "y", "z", "t", "points"};
 
 std::string one_line(std::string s) {
   for (char& c : s) {
@@ -50,17 +53,16 @@ class Parser {
     if (doc.contains("description") && !doc["description"].is_string()) {
       fail("'description' must be a string");
     }
-    if (doc.contains("curves") && !(doc["curves"].is_array() && doc["curves"].empty())) {
-      fail("curves are not supported yet (sharp features come in a later version)");
-    }
     const Box3 box = parse_bbox(doc);
     parse_functions(doc);
     std::vector<ImplicitOracle::SubdomainSpec> subdomains = parse_subdomains(doc);
+    std::vector<ImplicitOracle::CurveSpec> curves = parse_curves(doc);
     LoadedDomain result;
     result.hints = parse_hints(doc, box.center());
     try {
       result.oracle =
-          std::make_unique<ImplicitOracle>(box, functions_, std::move(subdomains), names_);
+          std::make_unique<ImplicitOracle>(box, functions_, std::move(subdomains), names_,
+                                           ImplicitOracle::Options{}, std::move(curves));
     } catch (const InputError& e) {
       fail(e.what());
     }
@@ -187,6 +189,85 @@ class Parser {
       out.push_back({label, function_list(s, "inside", label), function_list(s, "outside", label)});
     }
     return out;
+  }
+
+  std::vector<ImplicitOracle::CurveSpec> parse_curves(const Json& doc) const {
+    std::vector<ImplicitOracle::CurveSpec> out;
+    if (!doc.contains("curves")) return out;
+    const Json& list = doc["curves"];
+    if (!list.is_array()) fail("'curves' must be a list of curves");
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const Json& c = list[i];
+      if (!c.is_object()) fail("curve " + std::to_string(i + 1) + " must be an object");
+      std::string name = "curve_" + std::to_string(i + 1);
+      if (c.contains("name")) {
+        if (!c["name"].is_string() || c["name"].get<std::string>().empty()) {
+          fail("curve " + std::to_string(i + 1) + ": 'name' must be a non-empty string");
+        }
+        name = c["name"].get<std::string>();
+      }
+      for (const auto& other : out) {
+        if (other.name == name) fail("two curves are named '" + name + "'");
+      }
+      check_keys(c, std::begin(kCurveKeys), std::end(kCurveKeys), "in curve '" + name + "'");
+      out.push_back(parse_curve(c, name));
+    }
+    return out;
+  }
+
+  ImplicitOracle::CurveSpec parse_curve(const Json& c, const std::string& name) const {
+    const std::string where = "curve '" + name + "': ";
+    const bool parametric =
+        c.contains("x") || c.contains("y") || c.contains("z") || c.contains("t");
+    if (parametric == c.contains("points")) {
+      fail(where +
+           "give either \"x\", \"y\", \"z\" (expressions of t) and \"t\": [t0, t1], "
+           "or \"points\": [[x, y, z], ...]");
+    }
+    {
+      if (!parametric) {
+        const Json& pts = c["points"];
+        if (!pts.is_array() || pts.size() < 2) {
+          fail(where + "'points' must be a list of at least two [x, y, z] points");
+        }
+        std::vector<Point3> points;
+        for (std::size_t k = 0; k < pts.size(); ++k) {
+          const Json& p = pts[k];
+          if (!p.is_array() || p.size() != 3 || !p[0].is_number() || !p[1].is_number() ||
+              !p[2].is_number()) {
+            fail(where + "point " + std::to_string(k) + " must be [x, y, z] (three numbers)");
+          }
+          points.push_back({p[0].get<double>(), p[1].get<double>(), p[2].get<double>()});
+        }
+        std::shared_ptr<PolylineCurve> curve;
+        try {
+          curve = std::make_shared<PolylineCurve>(std::move(points));
+        } catch (const InputError& e) {
+          fail(where + e.what());
+        }
+        return {name, curve, curve->t_begin(), curve->t_end()};
+      }
+      std::string xyz[3];
+      for (int k = 0; k < 3; ++k) {
+        const char* key = k == 0 ? "x" : k == 1 ? "y" : "z";
+        if (!c.contains(key)) fail(where + "missing '" + key + "' (an expression of t)");
+        if (!c[key].is_string()) fail(where + "'" + key + "' must be an expression string of t");
+        xyz[k] = c[key].get<std::string>();
+      }
+      if (!c.contains("t")) fail(where + "missing 't': [t0, t1], the parameter range");
+      const Json& t = c["t"];
+      if (!t.is_array() || t.size() != 2 || !t[0].is_number() || !t[1].is_number() ||
+          !std::isfinite(t[0].get<double>()) || !std::isfinite(t[1].get<double>()) ||
+          !(t[0].get<double>() < t[1].get<double>())) {
+        fail(where + "'t' must be [t0, t1] with finite numbers t0 < t1, got " + one_line(t.dump()));
+      }
+      const double t0 = t[0].get<double>(), t1 = t[1].get<double>();
+      try {
+        return {name, std::make_shared<ParametricCurve>(xyz[0], xyz[1], xyz[2], t0, t1), t0, t1};
+      } catch (const InputError& e) {
+        fail(where + e.what());
+      }
+    }
   }
 
   std::optional<double> positive_number(const Json& doc, const char* key, double max) const {

@@ -167,7 +167,7 @@ TEST(DomainFile, FunctionErrors) {
                {"function 'ball'", "unknown function 'sqr'"});
   expect_error("{" + kBox + R"(, "functions": {"ball": "  "}})", {"function 'ball'", "empty"});
   expect_error("{" + kBox + ", " + kBall + R"(, "curves": [{"name": "rim"}]})",
-               {"curves are not supported yet"});
+               {"curve 'rim': give either"});
 }
 
 TEST(DomainFile, SubdomainErrors) {

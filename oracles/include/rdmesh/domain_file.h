@@ -10,7 +10,16 @@
 //       function (its inside is subdomain 1). A subdomain is where its inside
 //       functions are < 0 and its outside functions >= 0; the first match wins.
 //       "inside"/"outside" may also be a single name string.
-//   "curves": reserved for sharp features; only an empty list is accepted for now.
+//   "curves": [ ... ], optional: sharp features (curves L; corners Q are their
+//       endpoints and meeting points), each an object with an optional "name"
+//       (non-empty, unique; default "curve_<i>") and either
+//         "x", "y", "z": expressions of the single variable t, and
+//         "t": [t0, t1], finite, t0 < t1 (closed when the ends coincide), or
+//         "points": [[x, y, z], ...], at least two distinct points, a polyline
+//         parameterised by arc length (closed when first == last).
+//       Every curve must lie in the box and on the domain boundary (two labels
+//       around it); see rdmesh/implicit_oracle.h for splitting and corners.
+//       Errors read "ORIGIN: curve 'NAME': problem".
 //   Criteria hints (defaults that command-line options override):
 //   "size", "facet_size", "cell_size": positive number, or expression of x, y, z
 //       that must be positive and finite at the box center;
