@@ -1,9 +1,11 @@
 // Tests of ParametricCurve and PolylineCurve against analytic values.
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <thread>
 
 #include "rdmesh/errors.h"
 #include "rdmesh/parametric_curve.h"
@@ -166,6 +168,24 @@ TEST(ParametricCurve, Errors) {
             std::string::npos);
   EXPECT_NE(error_of([] { ParametricCurve(ParametricCurve::Function(), 0, 1); }).find("empty"),
             std::string::npos);
+}
+
+TEST(ParametricCurve, ConcurrentQueriesAgree) {
+  // Expression curves keep per-thread parsers: queries from several threads
+  // give the same answers as from one.
+  const ParametricCurve c("cos(t)", "sin(t)", "0.1*t", 0, 20);
+  const double expected = c.closest({2, 0, 0.5}, 0, 20);
+  std::vector<std::thread> threads;
+  std::atomic<int> mismatches{0};
+  for (int k = 0; k < 4; ++k) {
+    threads.emplace_back([&] {
+      for (int i = 0; i < 50; ++i) {
+        if (c.closest({2, 0, 0.5}, 0, 20) != expected) ++mismatches;
+      }
+    });
+  }
+  for (std::thread& t : threads) t.join();
+  EXPECT_EQ(mismatches.load(), 0);
 }
 
 TEST(PolylineCurve, SquareQueries) {

@@ -37,7 +37,8 @@ INSTANTIATE_TEST_SUITE_P(Samples, FeatureSample,
                                          Expected{"cube.json", 1, 1, 12, 8},
                                          Expected{"lens.json", 1, 1, 1, 0},
                                          Expected{"cylinder_through_ball.json", 2, 3, 2, 0},
-                                         Expected{"wedge.json", 1, 1, 3, 2}),
+                                         Expected{"wedge.json", 1, 1, 3, 2},
+                                         Expected{"cone_tip.json", 1, 1, 1, 0}),
                          [](const auto& info) {
                            std::string name = info.param.file;
                            return name.substr(0, name.find('.'));
