@@ -6,6 +6,7 @@
 
 #include "rdmesh/errors.h"
 
+#include "optimize/sliver_exuder.h"
 #include "refiner.h"
 
 namespace rdmesh {
@@ -43,8 +44,12 @@ MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& criteria,
   refiner.refine();
   const double refine = seconds_since(t);
 
-  t = std::chrono::steady_clock::now();
   MeshResult result;
+  if (options.exudation.enabled) {
+    result.exudation = detail::exude_slivers(refiner.triangulation(), criteria, options.exudation);
+  }
+
+  t = std::chrono::steady_clock::now();
   result.mesh = refiner.extract_mesh();
   result.stats = refiner.stats();
   result.stats.seconds_initial = initial;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "rdmesh/criteria.h"
+#include "rdmesh/optimization.h"
 #include "rdmesh/oracle.h"
 #include "rdmesh/tet_mesh.h"
 
@@ -24,6 +25,8 @@ struct Progress {
 struct MeshOptions {
   /// Called every few thousand insertions (and once at the end), from the calling thread.
   std::function<void(const Progress&)> progress;
+  /// Sliver exudation after refinement (on by default).
+  ExudationOptions exudation;
 };
 
 /// What refinement did, for the report.
@@ -51,6 +54,7 @@ struct RefinementStats {
 struct MeshResult {
   TetMesh mesh;
   RefinementStats stats;
+  ExudationStats exudation;  ///< ran == false when disabled
 };
 
 /// Runs Delaunay refinement on `oracle` until every rule R3-R5 is satisfied

@@ -1,0 +1,62 @@
+// Options and statistics of the mesh optimizers that run after Delaunay
+// refinement (RR-7912 section 6): sliver exudation [CDE+00].
+#pragma once
+
+#include <array>
+#include <cstddef>
+
+namespace rdmesh {
+
+/// Histogram of the smallest dihedral angle of each tetrahedron, in 5 degree
+/// buckets: bucket i counts the tets whose smallest dihedral angle lies in
+/// [5i, 5i + 5) degrees. The smallest dihedral angle of a tetrahedron is at
+/// most arccos(1/3) = 70.53 degrees (the regular one), hence 15 buckets.
+using DihedralHistogram = std::array<std::size_t, 15>;
+
+/// Sliver exudation: every vertex gets a weight, chosen to maximize the
+/// smallest dihedral angle of its incident tetrahedra, while the restricted
+/// facets (the boundary triangles) and the tet labels stay exactly as refinement
+/// left them. Vertices never move.
+struct ExudationOptions {
+  bool enabled = true;
+  /// Stop after this many seconds; 0 = no limit.
+  double time_limit_seconds = 0;
+  /// Vertices with an incident tetrahedron whose smallest dihedral angle is
+  /// below this bound (degrees) are pumped, worst first.
+  double sliver_bound_deg = 20;
+  /// Weight bound: a vertex's weight stays <= this fraction of the squared
+  /// distance to its nearest neighbour. CDE+00 prove that no vertex gets
+  /// hidden for (alpha N(v))^2 with alpha < 1/2 (ratio < 0.25); larger bounds
+  /// give more freedom, and a move that would hide a vertex is rejected anyway.
+  double max_weight_ratio = 0.4;
+  /// At most this many accepted weight changes per vertex.
+  int max_moves_per_vertex = 8;
+  /// New tetrahedra must satisfy the refinement rules for cells as the
+  /// criteria state them: R5.1 (circumradius <= cell_size at the circumcenter)
+  /// when keep_cell_size, R5.2 (radius-edge ratio <= cell_radius_edge) when
+  /// keep_radius_edge. Exudation then never creates a tet refinement would split,
+  /// at a large cost in quality (the size bound is tight after refinement): off
+  /// by default, as in CGAL's exuder.
+  bool keep_cell_size = false;
+  bool keep_radius_edge = false;
+  /// Debug self-check after exudation (slow): the regular triangulation is
+  /// valid, both sides of every facet hold the same restricted data, and
+  /// labels differ exactly across restricted facets. Throws InternalError.
+  bool self_check = false;
+};
+
+/// What exudation did, for the report. Angles are over the output tetrahedra
+/// (the cells of D|O); 0 when there are none.
+struct ExudationStats {
+  bool ran = false;
+  double min_dihedral_before_deg = 0;
+  double min_dihedral_after_deg = 0;
+  DihedralHistogram histogram_before{};
+  DihedralHistogram histogram_after{};
+  std::size_t moves_tried = 0;     ///< vertices whose weight was pumped
+  std::size_t moves_accepted = 0;  ///< weight changes applied to the triangulation
+  bool time_limit_reached = false;
+  double seconds = 0;
+};
+
+}  // namespace rdmesh

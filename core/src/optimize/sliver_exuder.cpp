@@ -1,0 +1,206 @@
+// The exudation driver: worst-first queue of vertices, weight bounds, time
+// limit and statistics. One vertex step is WeightPump (weight_pump.cpp).
+#include "sliver_exuder.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <queue>
+#include <string>
+#include <vector>
+
+#include "rdmesh/errors.h"
+#include "tet_shape.h"
+#include "weight_pump.h"
+
+namespace rdmesh::detail {
+namespace {
+
+void validate(const ExudationOptions& o) {
+  if (!(o.time_limit_seconds >= 0) || !std::isfinite(o.time_limit_seconds))
+    throw InputError("exudation time limit must be >= 0 seconds (0 = none), got " +
+                     std::to_string(o.time_limit_seconds));
+  if (!(o.sliver_bound_deg > 0 && o.sliver_bound_deg <= 90))
+    throw InputError("exudation sliver bound must be in (0, 90] degrees, got " +
+                     std::to_string(o.sliver_bound_deg));
+  if (!(o.max_weight_ratio >= 0 && o.max_weight_ratio < 1))
+    throw InputError("exudation weight ratio must be in [0, 1), got " +
+                     std::to_string(o.max_weight_ratio));
+  if (o.max_moves_per_vertex < 0)
+    throw InputError("exudation moves per vertex must be >= 0, got " +
+                     std::to_string(o.max_moves_per_vertex));
+}
+
+double cell_cosine(Cell_handle c) {
+  return max_dihedral_cosine(to_point3(c->vertex(0)->point()), to_point3(c->vertex(1)->point()),
+                             to_point3(c->vertex(2)->point()), to_point3(c->vertex(3)->point()));
+}
+
+bool in_domain(const Triangulation& tr, Cell_handle c) {
+  return c->info().label != 0 && !tr.is_infinite(c);
+}
+
+/// Minimum dihedral angle and histogram over the cells of D|O.
+void measure(const Triangulation& tr, double& min_deg, DihedralHistogram& histogram) {
+  histogram.fill(0);
+  double worst = -std::numeric_limits<double>::infinity();
+  for (auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c) {
+    if (c->info().label == 0) continue;
+    const double cosine = cell_cosine(c);
+    worst = std::max(worst, cosine);
+    add_to_histogram(histogram, cosine_to_degrees(cosine));
+  }
+  min_deg = std::isfinite(worst) ? cosine_to_degrees(worst) : 0.0;
+}
+
+struct QueuedVertex {
+  double cosine;  ///< worst cosine of its domain cells when queued (larger = worse)
+  Vertex_handle vertex;
+  bool operator<(const QueuedVertex& o) const { return cosine < o.cosine; }
+};
+
+class Exuder {
+ public:
+  Exuder(Triangulation& tr, const Criteria& criteria, const ExudationOptions& options)
+      : tr_(tr),
+        options_(options),
+        limits_{&criteria, options.keep_cell_size, options.keep_radius_edge},
+        bound_cosine_(std::cos(options.sliver_bound_deg * M_PI / 180)) {}
+
+  ExudationStats run() {
+    const auto start = std::chrono::steady_clock::now();
+    ExudationStats stats;
+    stats.ran = true;
+    measure(tr_, stats.min_dihedral_before_deg, stats.histogram_before);
+    WeightPump pump(tr_, prepare(), limits_);
+    std::vector<Cell_handle> star;
+    while (!queue_.empty()) {
+      if (options_.time_limit_seconds > 0 &&
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() >
+              options_.time_limit_seconds) {
+        stats.time_limit_reached = true;
+        break;
+      }
+      const QueuedVertex top = queue_.top();
+      queue_.pop();
+      const Vertex_handle v = top.vertex;
+      const int id = v->info().index;
+      if (!dirty_[id] || moves_[id] >= options_.max_moves_per_vertex) continue;
+      // The entry may be outdated: re-rank the vertex by its current star.
+      const double worst = worst_cosine(v, star);
+      if (!(worst > bound_cosine_)) continue;
+      if (worst < top.cosine) {
+        queue_.push({worst, v});
+        continue;
+      }
+      dirty_[id] = 0;  // tried on this star: wait until the star changes
+      ++stats.moves_tried;
+      const double max_weight = options_.max_weight_ratio * nearest_sq_[id];
+      if (pump.pump(v, max_weight) != WeightPump::Outcome::kAccepted) continue;
+      ++stats.moves_accepted;
+      ++moves_[id];
+      // Vertices of the new star: their stars changed.
+      for (const Cell_handle& c : pump.new_cells()) {
+        if (!in_domain(tr_, c)) continue;
+        const double cosine = cell_cosine(c);
+        if (!(cosine > bound_cosine_)) continue;
+        for (int k = 0; k < 4; ++k) {
+          dirty_[c->vertex(k)->info().index] = 1;
+          queue_.push({cosine, c->vertex(k)});
+        }
+      }
+    }
+    measure(tr_, stats.min_dihedral_after_deg, stats.histogram_after);
+    stats.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return stats;
+  }
+
+ private:
+  /// Vertex ids, nearest-neighbour distances, the first queue; returns the next free stamp.
+  std::uint32_t prepare() {
+    std::uint32_t max_stamp = 0;
+    for (auto c = tr_.all_cells_begin(); c != tr_.all_cells_end(); ++c)
+      max_stamp = std::max(max_stamp, c->info().stamp);
+    int n = 0;
+    for (auto v = tr_.finite_vertices_begin(); v != tr_.finite_vertices_end(); ++v)
+      v->info().index = n++;
+    nearest_sq_.assign(static_cast<std::size_t>(n), std::numeric_limits<double>::infinity());
+    moves_.assign(static_cast<std::size_t>(n), 0);
+    dirty_.assign(static_cast<std::size_t>(n), 1);
+    std::vector<double> worst(static_cast<std::size_t>(n), -std::numeric_limits<double>::infinity());
+    for (auto e = tr_.finite_edges_begin(); e != tr_.finite_edges_end(); ++e) {
+      const Vertex_handle a = e->first->vertex(e->second), b = e->first->vertex(e->third);
+      const double d2 = squared_norm(to_point3(a->point()) - to_point3(b->point()));
+      double& na = nearest_sq_[a->info().index];
+      double& nb = nearest_sq_[b->info().index];
+      na = std::min(na, d2);
+      nb = std::min(nb, d2);
+    }
+    for (auto c = tr_.finite_cells_begin(); c != tr_.finite_cells_end(); ++c) {
+      if (c->info().label == 0) continue;
+      const double cosine = cell_cosine(c);
+      for (int k = 0; k < 4; ++k) {
+        double& w = worst[c->vertex(k)->info().index];
+        w = std::max(w, cosine);
+      }
+    }
+    for (auto v = tr_.finite_vertices_begin(); v != tr_.finite_vertices_end(); ++v) {
+      const double w = worst[v->info().index];
+      if (w > bound_cosine_) queue_.push({w, v});
+    }
+    return max_stamp + 1;
+  }
+
+  /// Worst cosine over the domain cells incident to v.
+  double worst_cosine(Vertex_handle v, std::vector<Cell_handle>& star) const {
+    star.clear();
+    tr_.incident_cells(v, std::back_inserter(star));
+    double worst = -std::numeric_limits<double>::infinity();
+    for (const Cell_handle& c : star)
+      if (in_domain(tr_, c)) worst = std::max(worst, cell_cosine(c));
+    return worst;
+  }
+
+  Triangulation& tr_;
+  ExudationOptions options_;
+  CellLimits limits_;
+  double bound_cosine_;
+  std::vector<double> nearest_sq_;
+  std::vector<int> moves_;    ///< accepted moves per vertex
+  std::vector<char> dirty_;   ///< star changed since the vertex was last tried
+  std::priority_queue<QueuedVertex> queue_;
+};
+
+void check_invariants(const Triangulation& tr) {
+  if (!tr.is_valid()) throw InternalError("exudation left an invalid regular triangulation");
+  for (auto c = tr.all_cells_begin(); c != tr.all_cells_end(); ++c) {
+    for (int i = 0; i < 4; ++i) {
+      const Cell_handle n = c->neighbor(i);
+      const int j = n->index(c);
+      const int patch = c->info().facet_patch[i];
+      if (patch != n->info().facet_patch[j] ||
+          (patch != 0 && !(c->info().surface_center[i] == n->info().surface_center[j])))
+        throw InternalError("exudation: the two sides of a facet disagree on its restricted data");
+      if ((patch != 0) != (c->info().label != n->info().label))
+        throw InternalError("exudation: labels differ across a non-restricted facet (or agree "
+                            "across a restricted one), cell stamp " +
+                            std::to_string(c->info().stamp));
+    }
+  }
+}
+
+}  // namespace
+
+ExudationStats exude_slivers(Triangulation& tr, const Criteria& criteria,
+                             const ExudationOptions& options) {
+  validate(options);
+  if (tr.dimension() < 3) return {};
+  if (options.self_check) check_invariants(tr);
+  ExudationStats stats = Exuder(tr, criteria, options).run();
+  if (options.self_check) check_invariants(tr);
+  return stats;
+}
+
+}  // namespace rdmesh::detail

@@ -1,0 +1,354 @@
+// Weight pumping of one vertex: candidate zones in order of critical weight,
+// their validity against the restricted complex, the exact re-check and the
+// in-place re-triangulation (see weight_pump.h for the rules).
+#include "weight_pump.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "../simplex_geometry.h"
+#include "rdmesh/errors.h"
+#include "tet_shape.h"
+
+namespace rdmesh::detail {
+namespace {
+
+bool vertex_less(Vertex_handle a, Vertex_handle b) { return &*a < &*b; }
+
+/// Weight of v at which it enters the power sphere of finite cell c (v is not
+/// a vertex of c): |v - z|^2 - r^2 for c's orthosphere (z, r^2), computed
+/// relative to c's first vertex. Infinite for a flat cell.
+double critical_weight(Cell_handle c, const Point3& v) {
+  const Weighted_point& q0 = c->vertex(0)->point();
+  const Point3 p0 = to_point3(q0);
+  Point3 u[3];
+  double b[3];
+  for (int i = 0; i < 3; ++i) {
+    const Weighted_point& q = c->vertex(i + 1)->point();
+    u[i] = to_point3(q) - p0;
+    b[i] = 0.5 * (squared_norm(u[i]) - q.weight() + q0.weight());
+  }
+  const double det = dot(u[0], cross(u[1], u[2]));
+  if (!(std::abs(det) > 0)) return std::numeric_limits<double>::infinity();
+  // Orthocenter z = p0 + x with u_i . x = b_i.
+  const Point3 x = (1.0 / det) * (b[0] * cross(u[1], u[2]) + b[1] * cross(u[2], u[0]) +
+                                  b[2] * cross(u[0], u[1]));
+  const Point3 d = v - p0;
+  const double crit = squared_norm(d) + q0.weight() - 2.0 * dot(d, x);
+  return std::isfinite(crit) ? crit : std::numeric_limits<double>::infinity();
+}
+
+double cell_cosine(Cell_handle c) {
+  return max_dihedral_cosine(to_point3(c->vertex(0)->point()), to_point3(c->vertex(1)->point()),
+                             to_point3(c->vertex(2)->point()), to_point3(c->vertex(3)->point()));
+}
+
+}  // namespace
+
+WeightPump::WeightPump(Triangulation& tr, std::uint32_t first_stamp, CellLimits limits)
+    : tr_(tr), next_stamp_(first_stamp), limits_(limits) {
+  zone_.reserve(128);
+  boundary_.reserve(256);
+  edges_.reserve(768);
+}
+
+void WeightPump::collect_star(Vertex_handle v) {
+  zone_.clear();
+  star_facets_.clear();
+  tr_.incident_cells(v, std::back_inserter(zone_));
+  star_size_ = zone_.size();
+  zone_quality_ = -std::numeric_limits<double>::infinity();
+  for (const Cell_handle& c : zone_) {
+    c->tds_data().mark_in_conflict();
+    if (c->info().label != 0 && !tr_.is_infinite(c))
+      zone_quality_ = std::max(zone_quality_, cell_cosine(c));
+  }
+  // The restricted facets (v, a, b) of the star, each once (from the cell of
+  // smaller stamp; both cells hold the same data).
+  for (const Cell_handle& c : zone_) {
+    const int iv = c->index(v);
+    for (int i = 0; i < 4; ++i) {
+      if (i == iv || c->info().facet_patch[i] == 0) continue;
+      const Cell_handle n = c->neighbor(i);
+      if (n->info().stamp < c->info().stamp) continue;
+      StarFacet f;
+      for (int k = 1; k < 4; ++k) {
+        const Vertex_handle u = c->vertex((i + k) & 3);
+        if (u == v) continue;
+        (f.a == Vertex_handle() ? f.a : f.b) = u;
+      }
+      if (vertex_less(f.b, f.a)) std::swap(f.a, f.b);
+      f.patch = c->info().facet_patch[i];
+      f.center = c->info().surface_center[i];
+      f.label0 = c->info().label;
+      f.label1 = n->info().label;
+      star_facets_.push_back(f);
+    }
+  }
+}
+
+void WeightPump::push_frontier(Cell_handle c, Vertex_handle v) {
+  if (tr_.is_infinite(c) || c->tds_data().is_in_conflict()) return;
+  frontier_.push({critical_weight(c, to_point3(v->point())), c});
+}
+
+bool WeightPump::absorb(Cell_handle c) {
+  if (tr_.is_infinite(c)) return false;
+  for (int i = 0; i < 4; ++i) {
+    // A restricted facet between c and Z would be inside the new zone.
+    if (c->info().facet_patch[i] != 0 && c->neighbor(i)->tds_data().is_in_conflict()) return false;
+  }
+  c->tds_data().mark_in_conflict();
+  zone_.push_back(c);
+  if (c->info().label != 0) zone_quality_ = std::max(zone_quality_, cell_cosine(c));
+  return true;
+}
+
+bool WeightPump::within_limits(const Point3& v, const Point3& a, const Point3& b,
+                               const Point3& c) const {
+  if (limits_.criteria == nullptr || !(limits_.size || limits_.radius_edge)) return true;
+  const Point3 center = tet_circumcenter(v, a, b, c);
+  const double r2 = squared_norm(center - v);
+  if (!std::isfinite(r2)) return false;
+  if (limits_.size) {
+    const double sigma = limits_.criteria->cell_size(center);
+    if (r2 > sigma * sigma) return false;
+  }
+  if (limits_.radius_edge) {
+    const double beta = limits_.criteria->cell_radius_edge;
+    if (r2 > beta * beta * min_squared_edge(v, a, b, c)) return false;
+  }
+  return true;
+}
+
+void WeightPump::clear_marks() {
+  for (const Cell_handle& c : zone_) c->tds_data().clear();
+}
+
+bool WeightPump::has_boundary_edge(Vertex_handle a, Vertex_handle b) const {
+  if (vertex_less(b, a)) std::swap(a, b);
+  const BoundaryEdge key{a, b, -1};
+  const auto it = std::lower_bound(edges_.begin(), edges_.end(), key);
+  return it != edges_.end() && it->a == a && it->b == b;
+}
+
+double WeightPump::boundary_quality(Vertex_handle v, double cutoff) {
+  boundary_.clear();
+  const Point3 pv = to_point3(v->point());
+  double quality = -std::numeric_limits<double>::infinity();
+  for (const Cell_handle& c : zone_) {
+    for (int i = 0; i < 4; ++i) {
+      const Cell_handle n = c->neighbor(i);
+      if (n->tds_data().is_in_conflict()) continue;
+      BoundaryFacet f{c, i, 0, false};
+      f.label = c->info().facet_patch[i] != 0 ? c->info().label : n->info().label;
+      for (int k = 1; k < 4; ++k) f.infinite = f.infinite || tr_.is_infinite(c->vertex((i + k) & 3));
+      boundary_.push_back(f);
+      if (f.infinite || f.label == 0) continue;
+      const double cosine = max_dihedral_cosine(pv, to_point3(c->vertex((i + 1) & 3)->point()),
+                                                to_point3(c->vertex((i + 2) & 3)->point()),
+                                                to_point3(c->vertex((i + 3) & 3)->point()));
+      quality = std::max(quality, cosine);
+      if (!(quality < cutoff)) return quality;
+    }
+  }
+  return quality;
+}
+
+WeightPump::Check WeightPump::validate(Vertex_handle v) {
+  edges_.clear();
+  if (++mark_ == 0) {  // wrapped: reset the marks
+    std::fill(vertex_mark_.begin(), vertex_mark_.end(), 0);
+    mark_ = 1;
+  }
+  const Weighted_point& vp = v->point();
+  auto mark = [&](Vertex_handle u) -> std::uint32_t& {
+    const int id = u->info().index;
+    if (id < 0) return infinite_mark_;
+    if (static_cast<std::size_t>(id) >= vertex_mark_.size()) vertex_mark_.resize(id + 1, 0);
+    return vertex_mark_[static_cast<std::size_t>(id)];
+  };
+  for (std::size_t b = 0; b < boundary_.size(); ++b) {
+    const BoundaryFacet& f = boundary_[b];
+    const Cell_handle c = f.inner;
+    const int i = f.index;
+    const Vertex_handle w[3] = {c->vertex((i + 1) & 3), c->vertex((i + 2) & 3),
+                                c->vertex((i + 3) & 3)};
+    if (!f.infinite) {
+      // The new cell is c with vertex i replaced by v: it must be positive.
+      const Weighted_point* q[4];
+      for (int k = 0; k < 4; ++k) q[k] = k == i ? &vp : &c->vertex(k)->point();
+      if (CGAL::orientation(q[0]->point(), q[1]->point(), q[2]->point(), q[3]->point()) !=
+          CGAL::POSITIVE)
+        return Check::kInvalid;
+      if (f.label != 0 && !within_limits(to_point3(vp), to_point3(w[0]->point()),
+                                         to_point3(w[1]->point()), to_point3(w[2]->point())))
+        return Check::kInvalid;
+    }
+    for (int k = 0; k < 3; ++k) {
+      mark(w[k]) = mark_;
+      Vertex_handle a = w[k], b2 = w[(k + 1) % 3];
+      if (vertex_less(b2, a)) std::swap(a, b2);
+      edges_.push_back({a, b2, static_cast<int>(b)});
+    }
+  }
+  std::sort(edges_.begin(), edges_.end());
+  // No vertex of Z may end up inside it (it would be hidden); no feature edge may be lost.
+  for (std::size_t z = 0; z < zone_.size(); ++z) {
+    const Cell_handle c = zone_[z];
+    for (int k = 0; k < 4; ++k) {
+      const Vertex_handle u = c->vertex(k);
+      if (u == v) continue;
+      if (mark(u) != mark_) return Check::kInvalidFromNowOn;
+      if (z < star_size_ || tr_.is_infinite(u) || u->info().dim > FeatureDim::kCurve) continue;
+      for (int l = k + 1; l < 4; ++l) {
+        const Vertex_handle t = c->vertex(l);
+        if (!tr_.is_infinite(t) && t->info().dim <= FeatureDim::kCurve && !has_boundary_edge(u, t))
+          return Check::kInvalidFromNowOn;
+      }
+    }
+  }
+  // Every restricted facet of the old star must stay a facet.
+  for (const StarFacet& f : star_facets_)
+    if (!has_boundary_edge(f.a, f.b)) return Check::kInvalidFromNowOn;
+  // Each boundary edge ab is held by two boundary facets: the new cells on
+  // either side of the new facet (v, a, b). Their labels must agree with the
+  // restricted facets of the old star.
+  if (edges_.size() % 2 != 0) return Check::kInvalid;
+  for (std::size_t e = 0; e < edges_.size(); e += 2) {
+    const BoundaryEdge& x = edges_[e];
+    const BoundaryEdge& y = edges_[e + 1];
+    if (x.a != y.a || x.b != y.b) return Check::kInvalid;  // not a closed surface
+    const int lx = boundary_[x.facet].label, ly = boundary_[y.facet].label;
+    const StarFacet* restricted = nullptr;
+    for (const StarFacet& f : star_facets_)
+      if (f.a == x.a && f.b == x.b) restricted = &f;
+    if (restricted == nullptr) {
+      if (lx != ly) return Check::kInvalid;
+    } else if (!((lx == restricted->label0 && ly == restricted->label1) ||
+                 (lx == restricted->label1 && ly == restricted->label0))) {
+      return Check::kInvalid;
+    }
+  }
+  return Check::kValid;
+}
+
+WeightPump::Outcome WeightPump::pump(Vertex_handle v, double max_weight) {
+  collect_star(v);
+  frontier_ = {};
+  for (std::size_t z = 0; z < star_size_; ++z) push_frontier(zone_[z]->neighbor(zone_[z]->index(v)), v);
+
+  double best_weight = -1, best_quality = 0;
+  std::size_t best_size = 0;
+  while (!frontier_.empty()) {
+    const double crit = frontier_.top().crit;
+    if (!(crit < max_weight)) break;
+    // Every cell whose critical weight is <= crit joins Z (ties, and cells in
+    // conflict already because their weight is below the current level).
+    bool stop = false;
+    while (!frontier_.empty() && frontier_.top().crit <= crit) {
+      const Cell_handle c = frontier_.top().cell;
+      frontier_.pop();
+      if (c->tds_data().is_in_conflict()) continue;
+      if (!absorb(c)) {
+        stop = true;
+        break;
+      }
+      for (int i = 0; i < 4; ++i) push_frontier(c->neighbor(i), v);
+    }
+    if (stop) break;
+    const double next = frontier_.empty() ? max_weight : std::min(frontier_.top().crit, max_weight);
+    const double weight = 0.5 * (crit + next);
+    if (!(weight > crit && weight > v->point().weight())) continue;
+    // Cheap first: only a candidate better than the best so far is validated.
+    const double cutoff = best_weight < 0 ? zone_quality_ : std::min(zone_quality_, best_quality);
+    const double quality = boundary_quality(v, cutoff);
+    if (!(quality < cutoff)) continue;
+    const Check check = validate(v);
+    if (check == Check::kInvalidFromNowOn) break;
+    if (check != Check::kValid) continue;
+    best_weight = weight;
+    best_quality = quality;
+    best_size = zone_.size();
+  }
+  clear_marks();
+  if (best_weight < 0) return Outcome::kNoImprovement;
+  zone_.resize(best_size);
+  return commit(v, best_weight) ? Outcome::kAccepted : Outcome::kInexact;
+}
+
+bool WeightPump::commit(Vertex_handle v, double weight) {
+  const Weighted_point wp(v->point().point(), weight);
+  // The exact conflict zone of (v, weight) must be Z.
+  exact_cells_.clear();
+  exact_facets_.clear();
+  tr_.find_conflicts(wp, v->cell(), std::back_inserter(exact_facets_),
+                     std::back_inserter(exact_cells_));
+  if (exact_cells_.size() != zone_.size()) return false;
+  for (const Cell_handle& c : zone_) c->tds_data().mark_in_conflict();
+  bool same = true;
+  for (const Cell_handle& c : exact_cells_) same = same && c->tds_data().is_in_conflict();
+  boundary_quality(v, std::numeric_limits<double>::infinity());
+  if (!same || validate(v) != Check::kValid) {
+    clear_marks();
+    return false;
+  }
+  // Remember, for each new cell, the outer cell across its boundary facet.
+  struct Outer {
+    Cell_handle cell;
+    int index;
+    int label;
+  };
+  std::vector<Outer> outer;
+  outer.reserve(boundary_.size());
+  for (const BoundaryFacet& f : boundary_) {
+    const Cell_handle n = f.inner->neighbor(f.index);
+    outer.push_back({n, n->index(f.inner), f.label});
+  }
+  const BoundaryFacet& start = boundary_.front();
+  // Marks are set: re-triangulate the hole as the cone from v (the same vertex object).
+  tr_.tds()._insert_in_hole(zone_.begin(), zone_.end(), start.inner, start.index, v);
+  v->set_point(wp);
+
+  new_cells_.clear();
+  for (const Outer& o : outer) {
+    const Cell_handle c = o.cell->neighbor(o.index);
+    CellInfo& info = c->info();
+    info.stamp = next_stamp_++;
+    info.label = o.label;
+    info.facet_patch = {0, 0, 0, 0};
+    const int k = c->index(v);
+    info.facet_patch[k] = o.cell->info().facet_patch[o.index];
+    info.surface_center[k] = o.cell->info().surface_center[o.index];
+    for (int i = 0; i < 4; ++i) {
+      if (i == k) continue;
+      Vertex_handle a, b;
+      for (int j = 1; j < 4; ++j) {
+        const Vertex_handle u = c->vertex((i + j) & 3);
+        if (u != v) (a == Vertex_handle() ? a : b) = u;
+      }
+      if (vertex_less(b, a)) std::swap(a, b);
+      for (const StarFacet& f : star_facets_) {
+        if (f.a == a && f.b == b) {
+          info.facet_patch[i] = f.patch;
+          info.surface_center[i] = f.center;
+        }
+      }
+    }
+    if (tr_.is_infinite(c)) {
+      info.label = 0;
+    } else {
+      // The unweighted circumcenter, as refinement stores it (see sliver_exuder.h).
+      const Point3 p0 = to_point3(c->vertex(0)->point());
+      info.circumcenter = tet_circumcenter(p0, to_point3(c->vertex(1)->point()),
+                                           to_point3(c->vertex(2)->point()),
+                                           to_point3(c->vertex(3)->point()));
+      info.squared_radius = squared_norm(info.circumcenter - p0);
+    }
+    new_cells_.push_back(c);
+  }
+  return true;
+}
+
+}  // namespace rdmesh::detail

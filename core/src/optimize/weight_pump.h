@@ -1,0 +1,137 @@
+// Private to core/: one step of sliver exudation [CDE+00], pumping the weight
+// of one vertex of the regular triangulation while the restricted complex
+// stays exactly as it is.
+//
+// Raising the weight w of vertex v (its position is fixed) grows its star:
+// a cell c that is not incident to v joins the conflict zone of (v, w) when
+// w passes the critical weight crit(c) = |v - z_c|^2 - r_c^2, the power of v
+// with respect to c's orthosphere (center z_c, squared radius r_c^2). The
+// star at weight w is the cone from v over the boundary of the zone
+// Z(w) = {cells of the star of v} + {cells reachable from it with crit < w}.
+// Between two consecutive critical weights the star, hence its quality, is
+// constant: the candidates are these intervals, up to the weight bound.
+//
+// A candidate zone Z is valid when
+//  - every vertex of Z other than v stays on its boundary (none is hidden);
+//  - no restricted facet (D|S) disappears: Z never absorbs a cell across a
+//    restricted facet, and each restricted facet (v, a, b) of the old star
+//    keeps its edge ab on the boundary of Z (so (v, a, b) is a facet of the
+//    new star); no edge joining two feature vertices (dim <= 1) is lost;
+//  - labels stay consistent: a new cell takes the label of its outer
+//    neighbour across a non-restricted boundary facet, the label of the old
+//    cell it replaces across a restricted one, and two new cells sharing a
+//    facet (v, a, b) have equal labels unless (v, a, b) was restricted (then
+//    they carry the facet's two labels);
+//  - every new finite cell is positively oriented (exact predicate);
+//  - optionally, new domain cells satisfy the cell rules R5.1 / R5.2 of the
+//    criteria (CellLimits), so that the output still meets them.
+// Among valid candidates the one whose new domain cells (label != 0) have the
+// largest smallest dihedral angle wins, if it is strictly larger than the
+// smallest dihedral angle of the domain cells of Z it replaces. The chosen
+// weight is checked once more with CGAL's exact conflict test
+// (find_conflicts must return exactly Z) before the zone is re-triangulated
+// in place (the vertex object is kept).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <queue>
+#include <vector>
+
+#include "../triangulation_types.h"
+#include "rdmesh/criteria.h"
+
+namespace rdmesh::detail {
+
+/// Cell rules the new domain cells must keep (nullptr criteria: none).
+struct CellLimits {
+  const Criteria* criteria = nullptr;
+  bool size = false;         ///< R5.1: circumradius <= cell_size(circumcenter)
+  bool radius_edge = false;  ///< R5.2: circumradius <= cell_radius_edge * shortest edge
+};
+
+class WeightPump {
+ public:
+  enum class Outcome {
+    kAccepted,       ///< the weight changed; new_cells() is the new star
+    kNoImprovement,  ///< no valid weight below the bound improves the star
+    kInexact,        ///< the best weight's exact conflict zone differed from the estimate
+  };
+
+  /// `first_stamp`: the stamp given to the first cell this pump creates.
+  WeightPump(Triangulation& tr, std::uint32_t first_stamp, CellLimits limits = {});
+
+  /// Tries weights of `v` in (current weight, max_weight]; applies the best one.
+  Outcome pump(Vertex_handle v, double max_weight);
+
+  /// The cells created by the last accepted pump (the star of its vertex).
+  const std::vector<Cell_handle>& new_cells() const { return new_cells_; }
+
+ private:
+  struct Frontier {
+    double crit;
+    Cell_handle cell;
+    bool operator>(const Frontier& o) const { return crit > o.crit; }
+  };
+  /// A facet of the boundary of Z and the cell that will replace Z behind it.
+  struct BoundaryFacet {
+    Cell_handle inner;  ///< cell of Z
+    int index;          ///< facet index in `inner`
+    int label;          ///< label of the new cell (v + facet)
+    bool infinite;      ///< the facet has the infinite vertex
+  };
+  /// An edge of the boundary of Z and one boundary facet holding it.
+  struct BoundaryEdge {
+    Vertex_handle a, b;  ///< &*a < &*b
+    int facet;
+    bool operator<(const BoundaryEdge& o) const {
+      if (a != o.a) return &*a < &*o.a;
+      if (b != o.b) return &*b < &*o.b;
+      return facet < o.facet;
+    }
+  };
+  /// A restricted facet (v, a, b) of the old star, &*a < &*b.
+  struct StarFacet {
+    Vertex_handle a, b;
+    int patch;
+    Point3 center;
+    int label0, label1;
+  };
+  enum class Check { kValid, kInvalid, kInvalidFromNowOn };
+
+  void collect_star(Vertex_handle v);
+  void push_frontier(Cell_handle c, Vertex_handle v);
+  /// Adds c to Z; false (Z unchanged) when c may never join it.
+  bool absorb(Cell_handle c);
+  /// Lists the boundary of the current Z with the labels of the new cells and
+  /// returns the worst cosine of the new domain cells; stops early (returning
+  /// a value >= `cutoff`) as soon as one new domain cell is not better than `cutoff`.
+  double boundary_quality(Vertex_handle v, double cutoff);
+  /// Validity of the current Z, whose boundary boundary_quality() listed in full.
+  Check validate(Vertex_handle v);
+  bool has_boundary_edge(Vertex_handle a, Vertex_handle b) const;
+  void clear_marks();
+  bool commit(Vertex_handle v, double weight);
+
+  /// The new cell v + (a, b, c) keeps the cell rules of limits_.
+  bool within_limits(const Point3& v, const Point3& a, const Point3& b, const Point3& c) const;
+
+  Triangulation& tr_;
+  std::uint32_t next_stamp_;
+  CellLimits limits_;
+  std::vector<Cell_handle> zone_;  ///< Z: the star of v first, then absorbed cells
+  std::size_t star_size_ = 0;
+  double zone_quality_ = -1;       ///< worst cosine over the domain cells of Z
+  std::vector<StarFacet> star_facets_;
+  std::vector<BoundaryFacet> boundary_;
+  std::vector<BoundaryEdge> edges_;
+  std::vector<std::uint32_t> vertex_mark_;  ///< by VertexInfo::index: == mark_ on the boundary
+  std::uint32_t mark_ = 0;
+  std::uint32_t infinite_mark_ = 0;
+  std::priority_queue<Frontier, std::vector<Frontier>, std::greater<Frontier>> frontier_;
+  std::vector<Cell_handle> exact_cells_;
+  std::vector<Triangulation::Facet> exact_facets_;
+  std::vector<Cell_handle> new_cells_;
+};
+
+}  // namespace rdmesh::detail

@@ -1,0 +1,218 @@
+// Sliver exudation (RR-7912 section 6): the mesh with exudation against the
+// same run without it. Exudation must keep the boundary (the restricted
+// facets, with their patches) and the labelled regions exactly, never lower
+// the smallest dihedral angle, and leave a valid regular triangulation
+// (ExudationOptions::self_check runs tr.is_valid() and the facet/label checks).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <map>
+#include <set>
+#include <tuple>
+
+#include "mesh_checks.h"
+#include "rdmesh/errors.h"
+#include "rdmesh/implicit_oracle.h"
+#include "rdmesh/mesh_measures.h"
+#include "rdmesh/mesher.h"
+
+namespace rdmesh {
+namespace {
+
+Criteria uniform_criteria(double h) {
+  Criteria c;
+  c.facet_size = c.cell_size = ScalarField::uniform(h);
+  c.facet_distance = h / 10;
+  c.facet_angle_deg = 25;
+  c.cell_radius_edge = 2;
+  return c;
+}
+
+ImplicitOracle unit_sphere() {
+  return ImplicitOracle({{-1.2, -1.2, -1.2}, {1.2, 1.2, 1.2}},
+                        {[](const Point3& p) { return squared_norm(p) - 1.0; }});
+}
+
+double torus(const Point3& p) {
+  const double q = std::sqrt(p.x * p.x + p.y * p.y) - 1.0;
+  return q * q + p.z * p.z - 0.35 * 0.35;
+}
+
+ImplicitOracle nested_spheres() {
+  return ImplicitOracle({{-1.2, -1.2, -1.2}, {1.2, 1.2, 1.2}},
+                        {[](const Point3& p) { return squared_norm(p) - 0.25; },
+                         [](const Point3& p) { return squared_norm(p) - 1.0; }},
+                        {{"core", {0}, {}}, {"shell", {1}, {0}}});
+}
+
+using Triangle = std::tuple<std::array<double, 9>, int>;  ///< sorted corner coordinates, patch
+
+/// The labelled triangles as coordinates (vertex numbering differs between runs).
+std::set<Triangle> triangle_set(const TetMesh& mesh) {
+  std::set<Triangle> out;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    std::array<Point3, 3> p;
+    for (int k = 0; k < 3; ++k) p[k] = mesh.vertices[mesh.triangles[t][k]];
+    std::sort(p.begin(), p.end(), [](const Point3& a, const Point3& b) {
+      return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
+    });
+    std::array<double, 9> key;
+    for (int k = 0; k < 3; ++k) {
+      key[3 * k] = p[k].x;
+      key[3 * k + 1] = p[k].y;
+      key[3 * k + 2] = p[k].z;
+    }
+    out.insert({key, mesh.triangle_patch[t].value});
+  }
+  return out;
+}
+
+/// Smallest dihedral angle of the mesh, from the io layer's measure (independent of the core's).
+double min_dihedral_deg(const TetMesh& mesh) {
+  double worst = 180;
+  for (const auto& t : mesh.tets) {
+    const auto& v = mesh.vertices;
+    for (double a : dihedral_angles_deg(v[t[0]], v[t[1]], v[t[2]], v[t[3]])) worst = std::min(worst, a);
+  }
+  return worst;
+}
+
+struct Runs {
+  MeshResult off, on;
+};
+
+Runs mesh_both(const DomainOracle& oracle, const Criteria& criteria) {
+  MeshOptions off;
+  off.exudation.enabled = false;
+  MeshOptions on;
+  on.exudation.self_check = true;
+  return {generate_mesh(oracle, criteria, off), generate_mesh(oracle, criteria, on)};
+}
+
+/// Everything exudation promises, for one domain. `distance_to_boundary`: the
+/// distance of a point to the domain's surfaces.
+void expect_exudation_keeps_the_mesh(const Runs& r, const DomainOracle& oracle,
+                                     const Criteria& criteria,
+                                     const std::function<double(const Point3&)>& distance_to_boundary) {
+  const ExudationStats& s = r.on.exudation;
+  ASSERT_TRUE(s.ran);
+  std::printf("exudation: min dihedral %.2f -> %.2f deg, %zu/%zu moves, %.3f s, tets < 10 deg: %zu -> %zu\n",
+              s.min_dihedral_before_deg, s.min_dihedral_after_deg, s.moves_accepted,
+              s.moves_tried, s.seconds, s.histogram_before[0] + s.histogram_before[1],
+              s.histogram_after[0] + s.histogram_after[1]);
+  EXPECT_FALSE(r.off.exudation.ran);
+  EXPECT_GT(s.moves_accepted, 0u);
+  EXPECT_LE(s.moves_accepted, s.moves_tried);
+
+  // Never worse; the statistics describe the output.
+  EXPECT_GE(s.min_dihedral_after_deg, s.min_dihedral_before_deg);
+  EXPECT_NEAR(s.min_dihedral_before_deg, min_dihedral_deg(r.off.mesh), 1e-6);
+  EXPECT_NEAR(s.min_dihedral_after_deg, min_dihedral_deg(r.on.mesh), 1e-6);
+  std::size_t before = 0, after = 0;
+  for (std::size_t n : s.histogram_before) before += n;
+  for (std::size_t n : s.histogram_after) after += n;
+  EXPECT_EQ(before, r.off.mesh.tets.size());
+  EXPECT_EQ(after, r.on.mesh.tets.size());
+  // No tet below 5 degrees is left on a smooth domain.
+  EXPECT_EQ(s.histogram_after[0], 0u) << "min dihedral after: " << s.min_dihedral_after_deg;
+
+  // Same vertices, same boundary (triangles with their patches), same regions.
+  EXPECT_EQ(r.on.mesh.vertices.size(), r.off.mesh.vertices.size());
+  EXPECT_TRUE(triangle_set(r.on.mesh) == triangle_set(r.off.mesh));
+  for (const SubdomainInfo& sub : oracle.subdomains()) {
+    const double v_off = test::volume(r.off.mesh, sub.id), v_on = test::volume(r.on.mesh, sub.id);
+    EXPECT_NEAR(v_on, v_off, 1e-9 * v_off) << sub.name;
+  }
+  test::expect_positive_orientation(r.on.mesh);
+  test::expect_conforming(r.on.mesh);
+
+  // Labels: a tet's centroid lies in its subdomain, or near the boundary
+  // (the polyhedral boundary is within the facet distance of the surface).
+  std::size_t wrong = 0;
+  for (std::size_t t = 0; t < r.on.mesh.tets.size(); ++t) {
+    const auto& q = r.on.mesh.tets[t];
+    const auto& v = r.on.mesh.vertices;
+    const Point3 g = 0.25 * (v[q[0]] + v[q[1]] + v[q[2]] + v[q[3]]);
+    if (oracle.locate(g) != r.on.mesh.tet_subdomain[t] &&
+        distance_to_boundary(g) > criteria.facet_distance)
+      ++wrong;
+  }
+  EXPECT_EQ(wrong, 0u) << "tets whose centroid is far from their subdomain";
+}
+
+TEST(Exudation, SphereKeepsItsBoundaryAndLosesItsSlivers) {
+  const ImplicitOracle oracle = unit_sphere();
+  const Criteria criteria = uniform_criteria(0.1);
+  const Runs r = mesh_both(oracle, criteria);
+  expect_exudation_keeps_the_mesh(r, oracle, criteria,
+                                  [](const Point3& p) { return std::abs(norm(p) - 1.0); });
+  EXPECT_EQ(euler_characteristic(r.on.mesh.triangles), 2);
+}
+
+TEST(Exudation, TorusKeepsItsBoundaryAndLosesItsSlivers) {
+  const ImplicitOracle oracle({{-1.5, -1.5, -0.5}, {1.5, 1.5, 0.5}}, {torus});
+  const Criteria criteria = uniform_criteria(0.1);
+  const Runs r = mesh_both(oracle, criteria);
+  expect_exudation_keeps_the_mesh(r, oracle, criteria, [](const Point3& p) {
+    const double q = std::sqrt(p.x * p.x + p.y * p.y) - 1.0;
+    return std::abs(std::sqrt(q * q + p.z * p.z) - 0.35);
+  });
+}
+
+TEST(Exudation, NestedSpheresKeepTheirInterfaceAndBothLabels) {
+  const ImplicitOracle oracle = nested_spheres();
+  Criteria criteria = uniform_criteria(0.1);
+  criteria.facet_distance = 0.003;
+  const Runs r = mesh_both(oracle, criteria);
+  expect_exudation_keeps_the_mesh(r, oracle, criteria, [](const Point3& p) {
+    return std::min(std::abs(norm(p) - 0.5), std::abs(norm(p) - 1.0));
+  });
+  const std::set<int> labels(
+      [&] {
+        std::set<int> l;
+        for (SubdomainId s : r.on.mesh.tet_subdomain) l.insert(s.value);
+        return l;
+      }());
+  EXPECT_EQ(labels, (std::set<int>{1, 2}));
+}
+
+TEST(Exudation, TimeLimitStopsEarlyAndLeavesAValidMesh) {
+  const ImplicitOracle oracle = unit_sphere();
+  MeshOptions options;
+  options.exudation.time_limit_seconds = 1e-6;
+  options.exudation.self_check = true;
+  const MeshResult r = generate_mesh(oracle, uniform_criteria(0.15), options);
+  EXPECT_TRUE(r.exudation.time_limit_reached);
+  EXPECT_GE(r.exudation.min_dihedral_after_deg, r.exudation.min_dihedral_before_deg);
+  test::expect_positive_orientation(r.mesh);
+  test::expect_conforming(r.mesh);
+}
+
+TEST(Exudation, IsDeterministic) {
+  const ImplicitOracle oracle = unit_sphere();
+  const MeshResult a = generate_mesh(oracle, uniform_criteria(0.15));
+  const MeshResult b = generate_mesh(oracle, uniform_criteria(0.15));
+  EXPECT_EQ(a.mesh.tets, b.mesh.tets);
+  EXPECT_EQ(a.mesh.triangles, b.mesh.triangles);
+  EXPECT_EQ(a.exudation.moves_accepted, b.exudation.moves_accepted);
+}
+
+TEST(Exudation, InvalidOptionsAreRejected) {
+  const ImplicitOracle oracle = unit_sphere();
+  MeshOptions options;
+  options.exudation.time_limit_seconds = -1;
+  EXPECT_THROW(generate_mesh(oracle, uniform_criteria(0.3), options), InputError);
+  options = {};
+  options.exudation.max_weight_ratio = 1.5;
+  EXPECT_THROW(generate_mesh(oracle, uniform_criteria(0.3), options), InputError);
+  options = {};
+  options.exudation.sliver_bound_deg = 0;
+  EXPECT_THROW(generate_mesh(oracle, uniform_criteria(0.3), options), InputError);
+}
+
+}  // namespace
+}  // namespace rdmesh
