@@ -38,6 +38,7 @@ int run(const rdmesh::cli::Options& opt) {
   cli::ProgressDisplay progress(!opt.quiet);
   MeshOptions mesh_options;
   mesh_options.progress = [&progress](const Progress& p) { progress(p); };
+  mesh_options.exudation = cli::exudation_options(opt);
   MeshResult result = generate_mesh(*input.oracle, criteria, mesh_options);
   progress.finish();
 
@@ -53,10 +54,10 @@ int run(const rdmesh::cli::Options& opt) {
 
   const cli::RunTimes times{seconds_load, seconds_write, seconds_report};
   if (!opt.report.empty()) {
-    cli::write_json_report(opt, criteria, result.stats, quality, times);
+    cli::write_json_report(opt, criteria, result.stats, result.exudation, quality, times);
   }
   if (!opt.quiet) {
-    std::cout << format_summary(quality) << cli::format_run_summary(opt, result.stats, times);
+    std::cout << format_summary(quality) << cli::format_run_summary(opt, result.stats, result.exudation, times);
   }
   for (const PatchId& patch : result.stats.missing_patches) {
     std::fprintf(stderr, "rdmesh: warning: patch %d has no triangle in the mesh (too small for "

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -31,6 +32,18 @@ void add_options(CLI::App& app, Options& opt) {
   app.add_option("--radius-edge", opt.radius_edge, "Max radius-edge ratio of tetrahedra (default 2)");
   app.add_option("--min-size", opt.min_size,
                  "Termination guard: no two vertices closer than this (default 1e-4 of the box diagonal)");
+  app.add_flag("--no-exude", opt.no_exude, "Skip sliver exudation after refinement");
+  app.add_option("--exude-time-limit", opt.exude_time_limit,
+                 "Stop sliver exudation after this many seconds (default: no limit)")
+      ->check(CLI::Validator(
+          [](std::string& v) -> std::string {
+            try {
+              if (std::stod(v) >= 0) return {};
+            } catch (const std::exception&) {
+            }
+            return "must be a number of seconds >= 0 (0 = no limit), got '" + v + "'";
+          },
+          "SECONDS"));
   app.add_option("--report", opt.report, "Write a JSON report of the run to this file");
   app.add_flag("-q,--quiet", opt.quiet, "No progress and no summary");
 }
@@ -99,6 +112,13 @@ Criteria resolve_criteria(const Options& opt, const LoadedInput& input) {
   return c;
 }
 
+ExudationOptions exudation_options(const Options& opt) {
+  ExudationOptions o;
+  o.enabled = !opt.no_exude;
+  o.time_limit_seconds = opt.exude_time_limit;
+  return o;
+}
+
 namespace {
 
 /// A uniform size as its value, a varying one as "varying" (its expression is in the input).
@@ -110,7 +130,8 @@ nlohmann::json field_json(const ScalarField& f) {
 }  // namespace
 
 void write_json_report(const Options& opt, const Criteria& criteria, const RefinementStats& stats,
-                       const QualityReport& quality, const RunTimes& times) {
+                       const ExudationStats& exudation, const QualityReport& quality,
+                       const RunTimes& times) {
   nlohmann::json j = to_json(quality);
   j["input"] = opt.input;
   j["output"] = opt.output;
@@ -132,9 +153,20 @@ void write_json_report(const Options& opt, const Criteria& criteria, const Refin
   j["unmeshed_feature_edges"] = stats.unmeshed_feature_edges;
   j["missing_patches"] = nlohmann::json::array();
   for (const PatchId& p : stats.missing_patches) j["missing_patches"].push_back(p.value);
+  j["exudation"] = {{"ran", exudation.ran},
+                    {"min_dihedral_before_deg", exudation.min_dihedral_before_deg},
+                    {"min_dihedral_after_deg", exudation.min_dihedral_after_deg},
+                    {"histogram_bucket_deg", 5},
+                    {"histogram_before", exudation.histogram_before},
+                    {"histogram_after", exudation.histogram_after},
+                    {"moves_tried", exudation.moves_tried},
+                    {"moves_accepted", exudation.moves_accepted},
+                    {"time_limit_reached", exudation.time_limit_reached},
+                    {"seconds", exudation.seconds}};
   j["seconds"] = {{"load", times.load},
                   {"initial_points", stats.seconds_initial},
                   {"refine", stats.seconds_refine},
+                  {"exude", exudation.seconds},
                   {"extract", stats.seconds_extract},
                   {"write", times.write},
                   {"report", times.report}};
@@ -142,7 +174,7 @@ void write_json_report(const Options& opt, const Criteria& criteria, const Refin
 }
 
 std::string format_run_summary(const Options& opt, const RefinementStats& stats,
-                               const RunTimes& times) {
+                               const ExudationStats& exudation, const RunTimes& times) {
   std::ostringstream s;
   s.setf(std::ios::fixed);
   s.precision(2);
@@ -151,8 +183,18 @@ std::string format_run_summary(const Options& opt, const RefinementStats& stats,
     << " cell centers, " << stats.encroachments << " encroachments\n";
   s << "guard: " << (stats.guard_fired() ? "FIRED" : "not fired") << " ("
     << stats.guard_rejections << " points refused)\n";
+  if (exudation.ran) {
+    s << "exudation: min dihedral " << exudation.min_dihedral_before_deg << " -> "
+      << exudation.min_dihedral_after_deg << " deg, tets below 10 deg "
+      << exudation.histogram_before[0] + exudation.histogram_before[1] << " -> "
+      << exudation.histogram_after[0] + exudation.histogram_after[1] << ", "
+      << exudation.moves_accepted << " of " << exudation.moves_tried << " moves"
+      << (exudation.time_limit_reached ? " (time limit reached)" : "") << '\n';
+  } else {
+    s << "exudation: off\n";
+  }
   s << "time: load " << times.load << " s, refine " << stats.seconds_initial + stats.seconds_refine
-    << " s, extract " << stats.seconds_extract << " s, write " << times.write << " s, report "
+    << " s, exude " << exudation.seconds << " s, extract " << stats.seconds_extract << " s, write " << times.write << " s, report "
     << times.report << " s\n";
   s << "wrote " << opt.output << (opt.report.empty() ? "" : " and " + opt.report) << '\n';
   return s.str();

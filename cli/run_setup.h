@@ -22,6 +22,8 @@ struct Options {
   std::string output;  ///< default: the input's stem + ".msh" in the current directory
   std::optional<double> size, edge_size, facet_size, cell_size, facet_distance, facet_angle, radius_edge,
       min_size;
+  bool no_exude = false;                     ///< --no-exude
+  double exude_time_limit = 0;               ///< --exude-time-limit SECONDS, 0 = none
   std::string report;  ///< JSON report path, empty = none
   bool quiet = false;
 };
@@ -43,15 +45,19 @@ void check_writable(const std::string& path);
 /// Bounding-box defaults, overridden by the file's hints, overridden by options.
 Criteria resolve_criteria(const Options& opt, const LoadedInput& input);
 
+/// The optimizers' settings from the options (--no-exude, --exude-time-limit).
+ExudationOptions exudation_options(const Options& opt);
+
 struct RunTimes {
   double load = 0, write = 0, report = 0;
 };
 
 void write_json_report(const Options& opt, const Criteria& criteria, const RefinementStats& stats,
-                       const QualityReport& quality, const RunTimes& times);
+                       const ExudationStats& exudation, const QualityReport& quality,
+                       const RunTimes& times);
 
 std::string format_run_summary(const Options& opt, const RefinementStats& stats,
-                               const RunTimes& times);
+                               const ExudationStats& exudation, const RunTimes& times);
 
 }  // namespace rdmesh::cli
 
