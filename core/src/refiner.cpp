@@ -38,15 +38,13 @@ void Refiner::insert_initial_points() {
   Cell_handle hint;
   for (const PatchInfo& patch : oracle_.patches()) {
     for (const Point3& p : oracle_.initial_points(patch.id)) {
-      // A patch point close to a curve sample would encroach its arc at once.
+      // A patch point close to a curve would sit in the balls of its restricted
+      // edges and force tiny arcs; the curve samples cover that area instead.
       bool near_curve = false;
       for (const CurveState& c : curves_) {
-        const double spacing2 = squared_norm(to_point3(std::next(c.samples.begin())->second.vertex->point()) -
-                                             to_point3(c.samples.begin()->second.vertex->point()));
-        for (const auto& sample : c.samples) {
-          near_curve = near_curve ||
-                       squared_norm(p - to_point3(sample.second.vertex->point())) < 0.25 * spacing2;
-        }
+        const double t = c.curve->closest(p, c.info.t_begin, c.info.t_end);
+        const double keep_out = 0.25 * criteria_.edge_size(p);
+        near_curve = near_curve || squared_norm(c.curve->point(t) - p) < keep_out * keep_out;
       }
       if (near_curve) continue;
       const Vertex_handle v = tr_.insert(to_weighted(p), hint);

@@ -145,10 +145,12 @@ std::vector<PatchId> ImplicitOracle::patches_around(const Curve& curve, double t
     u = (1 / norm(u)) * u;
     const Point3 w = cross(tangent, u);
     int labels[kProbeDirections];
+    Point3 probes[kProbeDirections];
     bool several = false;
     for (int d = 0; d < kProbeDirections; ++d) {
       const double angle = 2 * 3.141592653589793 * d / kProbeDirections;
-      labels[d] = locate(x + (radius * std::cos(angle)) * u + (radius * std::sin(angle)) * w).value;
+      probes[d] = x + (radius * std::cos(angle)) * u + (radius * std::sin(angle)) * w;
+      labels[d] = locate(probes[d]).value;
       several = several || labels[d] != labels[0];
     }
     if (!several) {
@@ -158,7 +160,11 @@ std::vector<PatchId> ImplicitOracle::patches_around(const Curve& curve, double t
     }
     for (int d = 0; d < kProbeDirections; ++d) {
       const int a = labels[d], b = labels[(d + 1) % kProbeDirections];
-      if (a != b) out.push_back(patch_between(SubdomainId(a), SubdomainId(b)));
+      if (a == b) continue;
+      // The patch crossed between two adjacent probes (several functions may
+      // separate the same two labels around a curve: a cylinder's side and cap).
+      const auto hit = intersect(probes[d], probes[(d + 1) % kProbeDirections]);
+      if (hit) out.push_back(hit->patch);
     }
   }
   std::sort(out.begin(), out.end());

@@ -116,13 +116,24 @@ SubdomainId ImplicitOracle::locate(const Point3& p) const {
 }
 
 PatchId ImplicitOracle::patch_between(SubdomainId sa, SubdomainId sb) const {
-  int a = std::min(sa.value, sb.value), b = std::max(sa.value, sb.value);
+  const SubdomainId a = std::min(sa, sb), b = std::max(sa, sb);
+  for (const PatchInfo& p : patches_) {
+    if (p.side_a == a && p.side_b == b) return p.id;
+  }
+  throw OracleError("no patch between labels " + std::to_string(a.value) + " and " +
+                    std::to_string(b.value));
+}
+
+int ImplicitOracle::patch_key(int a, int b, int k) const {
+  if (a > b) std::swap(a, b);
   const int n = static_cast<int>(rules_.size());
-  if (a == b || a < 0 || b > n)
-    throw OracleError("no patch between labels " + std::to_string(a) + " and " + std::to_string(b));
   // Pairs (i, j), i < j <= n, ranked lexicographically: row i holds n - i pairs.
   const int rank = a * n - a * (a - 1) / 2 + (b - a - 1);
-  return PatchId(rank + 1);
+  return rank * (static_cast<int>(functions_.size()) + 1) + k;
+}
+
+PatchId ImplicitOracle::patch_of_key(int key) const {
+  return PatchId(patch_of_key_.empty() ? key + 1 : patch_of_key_[key]);
 }
 
 std::optional<SurfaceHit> ImplicitOracle::intersect(const Point3& a, const Point3& b) const {
@@ -152,7 +163,7 @@ std::optional<SurfaceHit> ImplicitOracle::intersect(const Point3& a, const Point
       const std::uint64_t s_other = tr.g_other < 0 ? (s_best | bit) : (s_best & ~bit);
       const int l_best = label_of(s_best);
       if (l_best != label_of(s_other)) {
-        return SurfaceHit{hit, patch_between(SubdomainId(l_best), SubdomainId(label_of(s_other)))};
+        return SurfaceHit{hit, patch_of_key(patch_key(l_best, label_of(s_other), k))};
       }
       // This sign change of f_k is not a label change: keep the half that has one.
       if (l_best != ls) {
@@ -176,8 +187,11 @@ std::optional<SurfaceHit> ImplicitOracle::intersect(const Point3& a, const Point
       for (int k : used_) vs[k] = vm[k];
     }
   }
-  // Several signs change within tolerance (e.g. at the box or a junction of functions).
-  return SurfaceHit{a + (0.5 * (ts + tt)) * dir, patch_between(SubdomainId(ls), SubdomainId(lt))};
+  // Several signs change within tolerance (e.g. at the box or a junction of
+  // functions): the patch of the lowest function changing sign, else the box.
+  const std::uint64_t changed = (ss ^ st) & ~kInBox;
+  const int k = changed ? std::countr_zero(changed) : static_cast<int>(functions_.size());
+  return SurfaceHit{a + (0.5 * (ts + tt)) * dir, patch_of_key(patch_key(ls, lt, k))};
 }
 
 std::vector<Point3> ImplicitOracle::initial_points(PatchId patch) const {

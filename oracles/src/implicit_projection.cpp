@@ -63,28 +63,24 @@ std::optional<Point3> ImplicitOracle::project_on_function(const Point3& p, int k
 }
 
 std::optional<Point3> ImplicitOracle::project(const Point3& p, PatchId patch) const {
-  const int n = static_cast<int>(rules_.size());
-  int a = -1, b = -1;
-  for (int i = 0; i <= n && a < 0; ++i) {
-    for (int j = i + 1; j <= n; ++j) {
-      if (patch_between(SubdomainId(i), SubdomainId(j)) == patch) {
-        a = i, b = j;
-        break;
-      }
-    }
+  if (patch.value <= 0 || patch.value >= static_cast<int>(key_of_patch_.size()) || !is_finite(p)) {
+    return std::nullopt;
   }
-  if (a < 0 || !is_finite(p)) return std::nullopt;
-  std::optional<Point3> best;
-  auto keep = [&](const std::optional<Point3>& q) {
+  const int key = key_of_patch_[patch.value];
+  const int n_functions = static_cast<int>(functions_.size());
+  const int k = key % (n_functions + 1);
+  if (k == n_functions) return std::nullopt;  // a boundary on the box: no function carries it
+  int a = -1, b = -1;
+  for (const PatchInfo& info : patches_) {
+    if (info.id == patch) a = info.side_a.value, b = info.side_b.value;
+  }
+  std::optional<Point3> best = project_on_function(p, k, a, b);
+  // The closest point of a patch may lie on its boundary, a crease where f_k
+  // and another function vanish (a cylinder's rim): project on those curves too.
+  for (int j : used_) {
+    if (j == k) continue;
+    const std::optional<Point3> q = project_on_crease(p, k, j, a, b);
     if (q && (!best || distance(*q, p) < distance(*best, p))) best = q;
-  };
-  for (int k : used_) keep(project_on_function(p, k, a, b));
-  // The closest point of a patch may lie on its boundary, a crease where two
-  // functions vanish (a cylinder's rim on a ball): project on those curves too.
-  for (std::size_t i = 0; i < used_.size(); ++i) {
-    for (std::size_t j = i + 1; j < used_.size(); ++j) {
-      keep(project_on_crease(p, used_[i], used_[j], a, b));
-    }
   }
   return best;
 }

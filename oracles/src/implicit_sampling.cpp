@@ -165,8 +165,24 @@ void ImplicitOracle::sample_box() {
     members[comp].push_back(c);
   }
 
+  // Number the patches found, in key order; crossings carried key + 1 so far.
   const int n_pairs = n_sub * (n_sub + 1) / 2;
-  initial_points_.assign(n_pairs + 1, {});
+  const int n_keys = n_pairs * (static_cast<int>(functions_.size()) + 1);
+  std::vector<char> found(n_keys, 0);
+  for (const Crossing& c : crossings) found[c.patch - 1] = 1;
+  patch_of_key_.assign(n_keys, 0);
+  key_of_patch_.assign(1, -1);
+  for (int key = 0; key < n_keys; ++key) {
+    if (!found[key]) continue;
+    patch_of_key_[key] = static_cast<int>(key_of_patch_.size());
+    key_of_patch_.push_back(key);
+  }
+  const int listed = static_cast<int>(key_of_patch_.size()) - 1;
+  for (int key = 0; key < n_keys; ++key) {
+    if (!found[key]) patch_of_key_[key] = listed + 1 + key;
+  }
+  for (Crossing& c : crossings) c.patch = patch_of_key_[c.patch - 1];
+  initial_points_.assign(listed + 1, {});
   const Point3 spacing = (1.0 / cells) * (box_.hi - box_.lo);
   for (const std::vector<int>& comp : members) {
     const int patch = crossings[comp.front()].patch;
@@ -205,16 +221,25 @@ void ImplicitOracle::sample_box() {
     out.insert(out.end(), points.begin(), points.end());
   }
 
-  for (int id = 1; id <= n_pairs; ++id) {
-    if (initial_points_[id].empty()) continue;
-    for (int a = 0; a <= n_sub; ++a) {
-      for (int b = a + 1; b <= n_sub; ++b) {
-        if (patch_between(SubdomainId(a), SubdomainId(b)).value != id) continue;
-        const std::string name_a = a == 0 ? "outside" : subdomain_infos_[a - 1].name;
-        patches_.push_back({PatchId(id), name_a + "/" + subdomain_infos_[b - 1].name,
-                            SubdomainId(a), SubdomainId(b)});
-      }
-    }
+  // Names: "a/b", with ":function" when several functions bound the same pair.
+  const int n_functions = static_cast<int>(functions_.size());
+  auto sides = [&](int key) {
+    const int rank = key / (n_functions + 1);
+    int a = 0;
+    while (rank >= (a + 1) * n_sub - a * (a + 1) / 2) ++a;
+    const int b = rank - (a * n_sub - a * (a - 1) / 2) + a + 1;
+    return std::make_pair(a, b);
+  };
+  for (int id = 1; id <= listed; ++id) {
+    const int key = key_of_patch_[id];
+    const auto [a, b] = sides(key);
+    const int k = key % (n_functions + 1);
+    int same_pair = 0;
+    for (int other = 1; other <= listed; ++other) same_pair += sides(key_of_patch_[other]) == sides(key);
+    std::string name = (a == 0 ? "outside" : subdomain_infos_[a - 1].name) + "/" +
+                       subdomain_infos_[b - 1].name;
+    if (same_pair > 1) name += ":" + (k < n_functions ? function_names_[k] : std::string("box"));
+    patches_.push_back({PatchId(id), name, SubdomainId(a), SubdomainId(b)});
   }
 }
 

@@ -1,6 +1,8 @@
 // Tests of the "curves" key of the .json domain file and of the samples with sharp features.
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include <algorithm>
 #include <cmath>
 
@@ -33,12 +35,12 @@ TEST_P(FeatureSample, LoadsConformsAndHasTheExpectedCounts) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Samples, FeatureSample,
-                         testing::Values(Expected{"capped_cylinder.json", 1, 1, 2, 0},
-                                         Expected{"cube.json", 1, 1, 12, 8},
-                                         Expected{"lens.json", 1, 1, 1, 0},
+                         testing::Values(Expected{"capped_cylinder.json", 1, 3, 2, 0},
+                                         Expected{"cube.json", 1, 6, 12, 8},
+                                         Expected{"lens.json", 1, 2, 1, 0},
                                          Expected{"cylinder_through_ball.json", 2, 3, 2, 0},
-                                         Expected{"wedge.json", 1, 1, 3, 2},
-                                         Expected{"cone_tip.json", 1, 1, 1, 0}),
+                                         Expected{"wedge.json", 1, 3, 3, 2},
+                                         Expected{"cone_tip.json", 1, 2, 1, 0}),
                          [](const auto& info) {
                            std::string name = info.param.file;
                            return name.substr(0, name.find('.'));
@@ -48,9 +50,22 @@ TEST(DomainFileCurves, CubeCornersJoinThreeEdges) {
   const LoadedDomain d = load_domain_file(kSamples + "cube.json");
   for (const CornerInfo& q : d.oracle->corners()) {
     EXPECT_EQ(q.curves.size(), 3u);
+    EXPECT_EQ(q.patches.size(), 3u) << "a cube corner touches three faces";
     EXPECT_NEAR(std::fabs(q.point.x) + std::fabs(q.point.y) + std::fabs(q.point.z), 1.5, 1e-12);
   }
   EXPECT_EQ(d.oracle->corners()[0].point, (Point3{-0.5, -0.5, -0.5}));
+  for (const CurveInfo& c : d.oracle->curves()) EXPECT_EQ(c.patches.size(), 2u) << c.name;
+}
+
+TEST(DomainFileCurves, CappedCylinderRimsSeparateSideAndCap) {
+  const LoadedDomain d = load_domain_file(kSamples + "capped_cylinder.json");
+  std::set<int> all;
+  for (const CurveInfo& c : d.oracle->curves()) {
+    ASSERT_EQ(c.patches.size(), 2u) << c.name;
+    all.insert(c.patches[0].value);
+    all.insert(c.patches[1].value);
+  }
+  EXPECT_EQ(all.size(), 3u) << "both rims share the side patch, each has its own cap";
 }
 
 TEST(DomainFileCurves, InterfaceCirclesTouchThreePatches) {

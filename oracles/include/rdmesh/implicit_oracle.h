@@ -7,12 +7,14 @@
 // matching subdomain (in order) gives the label, no match gives kOutside (0), and
 // every point outside the bounding box is kOutside.
 //
-// Patches are the boundaries between two different labels a < b. Patch ids are a
-// pure function of the pair: all pairs (a, b), 0 <= a < b <= n, ranked in
-// lexicographic order, id = rank + 1. patches() lists the pairs discovered by
-// sampling a regular grid over the box (Options::sampling_resolution cells per
-// axis); a boundary thinner than a grid cell may be missed by patches() and
-// initial_points(), never by locate()/intersect().
+// A patch is the part of the boundary between two different labels a < b that
+// lies on the zero set of one function f_k: a capped cylinder (inside three
+// functions) has three patches, side, top and bottom, separated by its rims.
+// Patches are discovered by sampling a regular grid over the box
+// (Options::sampling_resolution cells per axis) and numbered 1..m in the order
+// of their key (a, b, k); a boundary thinner than a grid cell may be missed by
+// patches() and initial_points(), never by locate()/intersect(), which then
+// return an unlisted id above m (deterministic: m + 1 + key).
 //
 // Sharp features (ImplicitCurveSpec, given to the constructor): curves are split
 // where they meet (a curve through another's endpoint, two curves crossing), so
@@ -120,7 +122,8 @@ class ImplicitOracle final : public DomainOracle {
   /// The piece `id` (throws OracleError for an unknown id).
   const Curve& curve(CurveId id) const override;
 
-  /// The id of the patch between labels a != b (in any order), listed or not.
+  /// The listed patch of smallest id between labels a != b (in any order);
+  /// throws OracleError when no listed patch separates them.
   PatchId patch_between(SubdomainId a, SubdomainId b) const;
 
  private:
@@ -147,6 +150,14 @@ class ImplicitOracle final : public DomainOracle {
   std::vector<Rule> rules_;
   std::vector<int> used_;  // indices of the functions some rule refers to
   std::vector<SubdomainInfo> subdomain_infos_;
+  /// Key of a patch: (label pair rank) * (F + 1) + k, with k the function whose
+  /// zero set carries it, k == F for boundaries that no single function carries
+  /// (the box, or junctions within tolerance).
+  int patch_key(int a, int b, int k) const;
+  /// The id of a key: from the table once sampling has built it, key + 1 before.
+  PatchId patch_of_key(int key) const;
+  std::vector<int> patch_of_key_;  // key -> patch id
+  std::vector<int> key_of_patch_;  // patch id -> key (listed patches)
   std::vector<PatchInfo> patches_;
   std::vector<std::vector<Point3>> initial_points_;  // indexed by patch id
   Options options_;
