@@ -39,7 +39,68 @@ double dihedral_at_edge(const Point3& p, const Point3& q, const Point3& r, const
   return angle * 180.0 / std::numbers::pi;
 }
 
+/// The distinct vertices of `edges`, sorted.
+std::vector<int> edge_vertices(const std::vector<std::array<int, 2>>& edges) {
+  std::vector<int> vertices;
+  vertices.reserve(2 * edges.size());
+  for (const auto& e : edges) vertices.insert(vertices.end(), e.begin(), e.end());
+  std::sort(vertices.begin(), vertices.end());
+  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+  return vertices;
+}
+
+/// Position of `v` in the sorted `vertices` (which contain it).
+std::size_t rank_of(const std::vector<int>& vertices, int v) {
+  return static_cast<std::size_t>(std::lower_bound(vertices.begin(), vertices.end(), v) -
+                                  vertices.begin());
+}
+
+/// Union-find root of `i` with path halving.
+std::size_t find_root(std::vector<std::size_t>& parent, std::size_t i) {
+  while (parent[i] != i) i = parent[i] = parent[parent[i]];
+  return i;
+}
+
 }  // namespace
+
+int count_chain_components(const std::vector<std::array<int, 2>>& edges) {
+  const std::vector<int> vertices = edge_vertices(edges);
+  std::vector<std::size_t> parent(vertices.size());
+  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = i;
+  int components = static_cast<int>(vertices.size());
+  for (const auto& e : edges) {
+    const std::size_t a = find_root(parent, rank_of(vertices, e[0]));
+    const std::size_t b = find_root(parent, rank_of(vertices, e[1]));
+    if (a != b) {
+      parent[a] = b;
+      --components;
+    }
+  }
+  return components;
+}
+
+bool is_simple_chain(const std::vector<std::array<int, 2>>& edges, bool closed) {
+  if (edges.empty()) return false;
+  std::vector<std::uint64_t> keys;
+  keys.reserve(edges.size());
+  for (const auto& e : edges) {
+    if (e[0] == e[1]) return false;
+    keys.push_back(edge_key(e[0], e[1]));
+  }
+  std::sort(keys.begin(), keys.end());
+  if (std::adjacent_find(keys.begin(), keys.end()) != keys.end()) return false;
+
+  const std::vector<int> vertices = edge_vertices(edges);
+  std::vector<int> degree(vertices.size(), 0);
+  for (const auto& e : edges) {
+    ++degree[rank_of(vertices, e[0])];
+    ++degree[rank_of(vertices, e[1])];
+  }
+  const auto ends = std::count(degree.begin(), degree.end(), 1);
+  const auto middles = std::count(degree.begin(), degree.end(), 2);
+  if (ends + middles != static_cast<long>(degree.size()) || ends != (closed ? 0 : 2)) return false;
+  return count_chain_components(edges) == 1;
+}
 
 int euler_characteristic(const std::vector<std::array<int, 3>>& triangles) {
   std::vector<int> vertices;

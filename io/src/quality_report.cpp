@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "feature_report.h"
 #include "mesh_labels.h"
 #include "rdmesh/errors.h"
 
@@ -119,6 +120,7 @@ QualityReport measure_quality(const TetMesh& mesh, const DomainOracle* oracle) {
   const std::vector<Label> patches = io_detail::patch_labels(mesh);
   for (const Label& l : patches) r.patches.push_back({PatchId(l.id), l.name});
   measure_patches(mesh, patches, oracle, r);
+  io_detail::measure_features(mesh, oracle, r);
   return r;
 }
 

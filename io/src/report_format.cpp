@@ -20,6 +20,29 @@ std::string printf_string(const char* format, auto... args) {
 /// "-" for a distance that was not measured, else the value.
 std::string distance_text(double d) { return d < 0 ? std::string("-") : printf_string("%.3g", d); }
 
+/// The features line and, when there are curves, one row per curve.
+std::string format_features(const QualityReport& r) {
+  std::size_t broken = 0, failures = 0;
+  for (const CurveStats& c : r.curves) {
+    broken += c.is_chain ? 0 : 1;
+    failures += c.projection_failures;
+  }
+  std::string s = printf_string(
+      "Features: %zu curves (%zu not a simple chain), %zu of %zu corners, max distance to "
+      "curves %s",
+      r.curves.size(), broken, r.corners_present, r.corners_expected,
+      distance_text(r.feature_max_distance).c_str());
+  if (failures > 0) s += printf_string(" (%zu curve queries failed)", failures);
+  s += '\n';
+  if (r.curves.empty()) return s;
+  s += printf_string("  %-8s %-24s %12s %6s %12s\n", "curve", "name", "edges", "chain", "max dist");
+  for (const CurveStats& c : r.curves) {
+    s += printf_string("  %-8d %-24s %12zu %6s %12s\n", c.id.value, c.name.c_str(), c.edges,
+                       c.is_chain ? "yes" : "NO", distance_text(c.max_distance).c_str());
+  }
+  return s;
+}
+
 }  // namespace
 
 nlohmann::json to_json(const QualityReport& r) {
@@ -49,6 +72,18 @@ nlohmann::json to_json(const QualityReport& r) {
                             {"max_distance", number(p.max_distance)},
                             {"projection_failures", p.projection_failures}});
   }
+  j["curves"] = nlohmann::json::array();
+  for (const CurveStats& c : r.curves) {
+    j["curves"].push_back({{"id", c.id.value},
+                           {"name", c.name},
+                           {"edges", c.edges},
+                           {"is_chain", c.is_chain},
+                           {"max_distance", number(c.max_distance)},
+                           {"projection_failures", c.projection_failures}});
+  }
+  j["corners_present"] = r.corners_present;
+  j["corners_expected"] = r.corners_expected;
+  j["feature_max_distance"] = number(r.feature_max_distance);
   return j;
 }
 
@@ -77,6 +112,7 @@ std::string format_summary(const QualityReport& r) {
     s += printf_string("  %-8d %-24s %12zu %6d %12s\n", p.id.value, p.name.c_str(), p.triangles,
                        p.euler_characteristic, distance_text(p.max_distance).c_str());
   }
+  if (!r.curves.empty() || r.corners_expected > 0) s += format_features(r);
   return s;
 }
 

@@ -21,6 +21,20 @@ int euler_characteristic(const std::vector<std::array<int, 3>>& triangles);
 /// An empty set is manifold.
 bool is_edge_manifold(const std::vector<std::array<int, 3>>& triangles);
 
+/// Number of connected components of the graph made of `edges` (pairs of
+/// vertex indices, orientation ignored); only vertices used by some edge count,
+/// so an empty set has 0 components.
+int count_chain_components(const std::vector<std::array<int, 2>>& edges);
+
+/// True when `edges` (orientation ignored) form one simple chain:
+///   - closed == false: an open path, i.e. connected, two end vertices of
+///     degree 1 and every other vertex of degree 2;
+///   - closed == true: one cycle, i.e. connected and every vertex of degree 2.
+/// A repeated edge (in either orientation), an edge from a vertex to itself,
+/// a branching vertex (degree > 2) or an empty set gives false.
+/// Example: {0,1},{1,2} is an open chain; {0,1},{1,2},{2,0} a closed one.
+bool is_simple_chain(const std::vector<std::array<int, 2>>& edges, bool closed);
+
 /// Signed volume (1/6) det[b-a, c-a, d-a]: positive when (a,b,c,d) is
 /// positively oriented in the TetMesh sense.
 double signed_volume(const Point3& a, const Point3& b, const Point3& c, const Point3& d);

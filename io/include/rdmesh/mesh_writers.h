@@ -5,8 +5,11 @@
 //   - the vertices at full double precision (shortest round-trip form),
 //   - each tetrahedron with its subdomain id,
 //   - each boundary/interface triangle exactly once, with its patch id,
-//   - the subdomain and patch names where the format can carry them (Gmsh).
-// Output is deterministic: the same TetMesh gives byte-identical files.
+//   - each feature edge with its curve id, each corner vertex with its corner id,
+//   - the subdomain, patch and curve names where the format can carry them (Gmsh).
+// Output is deterministic: the same TetMesh gives byte-identical files. A mesh
+// without features (no edges, corner vertices, curves or corners) gives the
+// same files as before the 1D/0D levels existed.
 #pragma once
 
 #include <iosfwd>
@@ -28,23 +31,35 @@ enum class MeshFormat {
 /// @throws InputError(path, "unknown output extension ...") for any other extension.
 MeshFormat format_from_path(const std::string& path);
 
-/// Medit `.mesh`: Vertices (ref 0), Tetrahedra (ref = subdomain id),
-/// Triangles (ref = patch id); 1-based indices.
+/// Medit `.mesh`: Vertices (ref = corner id for a corner vertex, else 0),
+/// Tetrahedra (ref = subdomain id), Triangles (ref = patch id), then when
+/// present Edges (ref = curve id) and Corners (the corner vertices, which the
+/// keyword lists without ids); 1-based indices.
 /// @throws InternalError if `mesh` is inconsistent (index out of range, label
-///         arrays of the wrong size); OutputError if the stream fails.
+///         arrays of the wrong size, label < 1, feature edge joining a vertex to
+///         itself, vertex or corner id listed twice as a corner); OutputError if
+///         the stream fails.
 void write_medit(const TetMesh& mesh, std::ostream& out);
 
 /// Gmsh MSH 4.1 ASCII: one physical volume (tag = subdomain id) per subdomain,
-/// one physical surface (tag = patch id) per patch, both named; one elementary
-/// entity per physical group with the same tag. All nodes are written in a
-/// single block classified on the first volume entity; elements are grouped by
-/// entity (type 4 tetrahedra, type 2 triangles). Node and element tags are 1-based.
+/// one physical surface (tag = patch id) per patch, one physical curve (tag =
+/// curve id) per curve and one physical point (tag = corner id) per corner, all
+/// named ("corner_<id>" for corners, which have no name); one elementary entity
+/// per physical group with the same tag. Entity topology: a volume is bounded
+/// by the patches of TetMesh::patches touching it, a surface by the curves whose
+/// CurveInfo::patches list it, an open curve by its start (+) and end (-) corner.
+/// All nodes are written in a single block classified on the first volume
+/// entity; elements are grouped by entity (type 4 tetrahedra, type 2 triangles,
+/// type 1 lines, type 15 points, in that order). Node and element tags are 1-based.
 /// @throws InternalError if `mesh` is inconsistent; OutputError if the stream fails.
 void write_gmsh41(const TetMesh& mesh, std::ostream& out);
 
-/// VTK XML `.vtu` with tetrahedra (VTK type 10) followed by triangles (type 5)
-/// in one UnstructuredGrid. Int32 cell arrays: "subdomain" (0 on triangles) and
-/// "patch" (0 on tetrahedra). Indices are 0-based as VTK requires.
+/// VTK XML `.vtu` with tetrahedra (VTK type 10), then triangles (type 5), then
+/// feature edges (type 3, VTK_LINE) and corner vertices (type 1, VTK_VERTEX) in
+/// one UnstructuredGrid. Int32 cell arrays: "subdomain" (0 except on
+/// tetrahedra) and "patch" (0 except on triangles); for a mesh with features
+/// also "curve" (0 except on lines) and "corner" (0 except on vertices).
+/// Indices are 0-based as VTK requires.
 /// @throws InternalError if `mesh` is inconsistent; OutputError if the stream fails.
 void write_vtu(const TetMesh& mesh, std::ostream& out);
 

@@ -1,7 +1,8 @@
 // The quality report of an output mesh (DESIGN.md, "Contracts"): counts per
 // subdomain and patch, dihedral angle extremes and histogram, radius-edge
 // ratio, volumes, boundary topology and the measured distance of boundary
-// triangles to their patch.
+// triangles to their patch; for sharp features, per-curve edge counts, chain
+// topology and distance to the curve, and the corners found.
 #pragma once
 
 #include <array>
@@ -34,6 +35,24 @@ struct PatchStats {
   std::size_t projection_failures = 0;  ///< samples whose projection failed (skipped)
 };
 
+/// Per-curve figures.
+struct CurveStats {
+  CurveId id;
+  std::string name;       ///< from TetMesh::curves, empty if the id is not listed there
+  std::size_t edges = 0;  ///< feature edges labelled `id`
+  /// The curve's edges form one simple chain (is_simple_chain): an open path
+  /// whose two ends are the vertices of its start and end corners, or one
+  /// cycle when the curve is closed (a cycle through the corner when an open
+  /// curve starts and ends at the same corner). A curve not listed in
+  /// TetMesh::curves passes with either shape. Orientation is not checked.
+  bool is_chain = false;
+  /// Max distance of the edge samples (vertices, midpoints, quarter points) to
+  /// the curve, the closest point being oracle->curve(id).point(closest(sample,
+  /// t_begin, t_end)); -1 = not measured (no oracle, or every sample failed).
+  double max_distance = -1;
+  std::size_t projection_failures = 0;  ///< samples whose closest-point query failed (skipped)
+};
+
 /// Whole-mesh figures. Every patch and subdomain listed in the TetMesh appears,
 /// plus any id used by an element but missing from the lists; both sorted by id.
 struct QualityReport {
@@ -50,6 +69,11 @@ struct QualityReport {
   std::size_t projection_failures = 0;    ///< sum over patches
   std::vector<SubdomainStats> subdomains;
   std::vector<PatchStats> patches;
+  /// Every curve listed in TetMesh::curves or used by a feature edge, sorted by id.
+  std::vector<CurveStats> curves;
+  std::size_t corners_present = 0;   ///< corners of TetMesh::corners that have a corner vertex
+  std::size_t corners_expected = 0;  ///< TetMesh::corners.size()
+  double feature_max_distance = -1;  ///< max over curves; -1 = not measured
 };
 
 /// Measures `mesh`. When `oracle` is not null, each boundary triangle is
@@ -63,12 +87,14 @@ struct QualityReport {
 QualityReport measure_quality(const TetMesh& mesh, const DomainOracle* oracle);
 
 /// The report as JSON. Keys are the field names of QualityReport,
-/// SubdomainStats and PatchStats; ids are plain integers; a non-finite value
+/// SubdomainStats, PatchStats and CurveStats; ids are plain integers; a non-finite value
 /// (radius-edge of a flat tet) is written as null.
 nlohmann::json to_json(const QualityReport& r);
 
 /// A human-readable multi-line summary (global figures, then one table row per
-/// subdomain and per patch) for the terminal. Ends with a newline.
+/// subdomain and per patch; a features line when the mesh has curves or
+/// corners, and one row per curve when it has curves) for the terminal. Ends
+/// with a newline.
 std::string format_summary(const QualityReport& r);
 
 }  // namespace rdmesh
