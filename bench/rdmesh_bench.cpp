@@ -42,6 +42,7 @@ const std::vector<Case>& all_cases() {
       {"sphere-0.05", "sphere", 0.05, false},
       {"sphere-0.025", "sphere", 0.025, false},
       {"torus-0.05", "torus", 0.05, true},
+      {"torus-0.025", "torus", 0.025, false},
   };
   return cases;
 }
@@ -51,6 +52,10 @@ struct Wire {
   int ok = 0;
   std::uint64_t tets = 0, vertices = 0, non_positive = 0, guard_rejections = 0;
   double seconds = 0, setup_seconds = 0, min_dihedral_deg = 0, max_radius_edge = 0, volume = 0;
+  // --optimize: quality before the optimizers, their times.
+  std::uint64_t below_10 = 0, below_10_before = 0;
+  double min_dihedral_before_deg = 0, min_dihedral_perturbed_deg = -1;
+  double refine_seconds = 0, perturb_seconds = 0, exude_seconds = 0;
   char error[400] = {};
 };
 
@@ -63,12 +68,13 @@ struct Outcome {
 enum class Side { kRdmesh, kCgal };
 
 double g_cgal_relative_error = 1e-3;  // --cgal-relative-error
+bool g_optimize = false;              // --optimize
 
 Wire run_side_inline(Side side, const Case& c) {
   Wire w;
   try {
     if (side == Side::kRdmesh) {
-      const RdmeshResult r = run_rdmesh(c.shape, c.h);
+      const RdmeshResult r = run_rdmesh(c.shape, c.h, g_optimize);
       w.tets = r.tets;
       w.vertices = r.vertices;
       w.seconds = r.seconds;
@@ -78,8 +84,13 @@ Wire run_side_inline(Side side, const Case& c) {
       w.volume = r.volume;
       w.non_positive = r.non_positive;
       w.guard_rejections = r.guard_rejections;
+      w.below_10 = r.below_10_deg;
+      w.below_10_before = r.below_10_deg_before;
+      w.min_dihedral_before_deg = r.min_dihedral_before_deg;
+      w.refine_seconds = r.refine_seconds;
+      w.exude_seconds = r.optimize_seconds;
     } else {
-      const AnchorResult r = run_cgal_anchor(c.shape, c.h, g_cgal_relative_error);
+      const AnchorResult r = run_cgal_anchor(c.shape, c.h, g_cgal_relative_error, g_optimize);
       w.tets = r.tets;
       w.vertices = r.vertices;
       w.seconds = r.seconds;
@@ -87,6 +98,13 @@ Wire run_side_inline(Side side, const Case& c) {
       w.max_radius_edge = r.max_radius_edge;
       w.volume = r.volume;
       w.non_positive = r.non_positive;
+      w.below_10 = r.below_10_deg;
+      w.below_10_before = r.below_10_deg_before;
+      w.min_dihedral_before_deg = r.min_dihedral_before_deg;
+      w.min_dihedral_perturbed_deg = r.min_dihedral_perturbed_deg;
+      w.refine_seconds = r.refine_seconds;
+      w.perturb_seconds = r.perturb_seconds;
+      w.exude_seconds = r.exude_seconds;
     }
     w.ok = 1;
     if (w.tets == 0) {
@@ -192,14 +210,63 @@ std::string cell_error(const std::string& e) {
   return "failed: " + s;
 }
 
+struct Row {
+  Case c;
+  std::optional<Outcome> r, cg;
+};
+
+bool succeeded(const std::optional<Outcome>& o) { return o && o->error.empty(); }
+
+/// --optimize: smallest dihedral angle and tets below 10 degrees before and
+/// after each side's optimizers, and the optimizers' times.
+void print_optimize_table(const std::vector<Row>& rows, int repeat) {
+  std::printf("Sliver removal: rdmesh sliver exudation vs CGAL %s perturb_mesh_3 + exude_mesh_3 as\n"
+              "make_mesh_3(perturb(), exude()) runs them (default bounds, time limit = refine time\n"
+              "each); same criteria as the refinement table (cell radius-edge 3); %d run(s) per side,\n"
+              "median total time; CGAL relative_error_bound %g. Angles in degrees, min over all tets;\n"
+              "'<10' = tets with a dihedral angle below 10 degrees.\n\n",
+              cgal_anchor_version().c_str(), repeat, g_cgal_relative_error);
+  std::printf("| case | tets (r / C) | min dihedral before (r / C) | rdmesh after exude | CGAL after "
+              "perturb | CGAL after exude | <10 before (r / C) | <10 after (r / C) | refine s (r / C) "
+              "| optimize s (r / C) | CGAL perturb s + exude s | optimize time ratio r/C |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  for (const Row& row : rows) {
+    const bool rok = succeeded(row.r), cok = succeeded(row.cg);
+    const Wire* r = rok ? &row.r->w : nullptr;
+    const Wire* c = cok ? &row.cg->w : nullptr;
+    auto num = [](const Wire* w, const char* f, double v) { return w ? fmt(f, v) : std::string("-"); };
+    auto cnt = [](const Wire* w, std::uint64_t v) { return w ? std::to_string(v) : std::string("-"); };
+    const std::string rt = rok ? std::to_string(r->tets) : row.r ? cell_error(row.r->error) : "-";
+    const std::string ct = cok ? std::to_string(c->tets) : row.cg ? cell_error(row.cg->error) : "-";
+    const double c_opt = c ? c->perturb_seconds + c->exude_seconds : 0;
+    std::printf("| %s | %s / %s | %s / %s | %s | %s | %s | %s / %s | %s / %s | %s / %s | %s / %s | %s + %s | %s |\n",
+                row.c.name.c_str(), rt.c_str(), ct.c_str(),
+                num(r, "%.2f", r ? r->min_dihedral_before_deg : 0).c_str(),
+                num(c, "%.2f", c ? c->min_dihedral_before_deg : 0).c_str(),
+                num(r, "%.2f", r ? r->min_dihedral_deg : 0).c_str(),
+                num(c, "%.2f", c ? c->min_dihedral_perturbed_deg : 0).c_str(),
+                num(c, "%.2f", c ? c->min_dihedral_deg : 0).c_str(),
+                cnt(r, r ? r->below_10_before : 0).c_str(), cnt(c, c ? c->below_10_before : 0).c_str(),
+                cnt(r, r ? r->below_10 : 0).c_str(), cnt(c, c ? c->below_10 : 0).c_str(),
+                num(r, "%.2f", r ? r->refine_seconds : 0).c_str(),
+                num(c, "%.2f", c ? c->refine_seconds : 0).c_str(),
+                num(r, "%.2f", r ? r->exude_seconds : 0).c_str(), num(c, "%.2f", c_opt).c_str(),
+                num(c, "%.2f", c ? c->perturb_seconds : 0).c_str(),
+                num(c, "%.2f", c ? c->exude_seconds : 0).c_str(),
+                r && c && c_opt > 0 ? fmt("%.2f", r->exude_seconds / c_opt).c_str() : "-");
+  }
+}
+
 void usage(const char* argv0) {
   std::fprintf(stderr,
                "usage: %s [--quick] [--case NAME]... [--repeat N] [--side both|rdmesh|cgal]\n"
-               "          [--timeout SECONDS] [--no-fork] [--cgal-relative-error E]\n"
+               "          [--timeout SECONDS] [--no-fork] [--cgal-relative-error E] [--optimize]\n"
                "cases:",
                argv0);
   for (const Case& c : all_cases()) std::fprintf(stderr, " %s", c.name.c_str());
-  std::fprintf(stderr, "\n--quick: sphere-0.1 and torus-0.05. Default: all cases, once per side.\n");
+  std::fprintf(stderr, "\n--quick: sphere-0.1 and torus-0.05. Default: all cases, once per side.\n"
+                       "--optimize: sliver removal table (rdmesh exudation vs CGAL perturb + exude);\n"
+                       "  default cases sphere-0.025 and torus-0.05.\n");
 }
 
 }  // namespace
@@ -230,6 +297,8 @@ int main(int argc, char** argv) {
       sides = value();
     } else if (a == "--cgal-relative-error") {
       g_cgal_relative_error = std::atof(value().c_str());
+    } else if (a == "--optimize") {
+      g_optimize = true;
     } else if (a == "--no-fork") {
       fork_side = false;
     } else if (a == "-h" || a == "--help") {
@@ -247,7 +316,11 @@ int main(int argc, char** argv) {
   }
   std::vector<Case> cases;
   for (const Case& c : all_cases()) {
-    const bool picked = selected.empty() ? (!quick || c.quick)
+    const bool default_pick =
+        g_optimize ? (quick ? c.name == "sphere-0.1" || c.name == "torus-0.05"
+                            : c.name == "sphere-0.025" || c.name == "torus-0.05")
+                   : (!quick || c.quick);
+    const bool picked = selected.empty() ? default_pick
                                          : std::find(selected.begin(), selected.end(), c.name) !=
                                                selected.end();
     if (picked) cases.push_back(c);
@@ -262,10 +335,6 @@ int main(int argc, char** argv) {
   }
   const bool run_r = sides != "cgal", run_c = sides != "rdmesh";
 
-  struct Row {
-    Case c;
-    std::optional<Outcome> r, cg;
-  };
   std::vector<Row> rows;
   for (const Case& c : cases) {
     std::vector<Outcome> rr, cc;
@@ -292,6 +361,13 @@ int main(int argc, char** argv) {
     rows.push_back(std::move(row));
   }
 
+  if (g_optimize) {
+    print_optimize_table(rows, repeat);
+    bool all_ok = true;
+    for (const Row& row : rows)
+      all_ok = all_ok && (!row.r || succeeded(row.r)) && (!row.cg || succeeded(row.cg));
+    return all_ok ? 0 : 1;
+  }
   std::printf("rdmesh vs CGAL %s Mesh_3 (sequential), criteria: facet angle 25, facet size = cell size = h,\n"
               "facet distance h/10, cell radius-edge 3, no perturb, no exude; %d run(s) per side, median time;\n"
               "CGAL relative_error_bound %g.\n\n",

@@ -11,7 +11,7 @@
 #include "shapes.h"
 #include "tet_quality.h"
 
-RdmeshResult run_rdmesh(const std::string& shape_name, double h) {
+RdmeshResult run_rdmesh(const std::string& shape_name, double h, bool optimize) {
   const rdmesh_bench::Shape* shape = rdmesh_bench::find_shape(shape_name);
   if (shape == nullptr) throw std::invalid_argument("unknown shape: " + shape_name);
   const auto f = shape->f;
@@ -34,7 +34,9 @@ RdmeshResult run_rdmesh(const std::string& shape_name, double h) {
   criteria.cell_radius_edge = bc.cell_radius_edge;
 
   const auto t2 = std::chrono::steady_clock::now();
-  const rdmesh::MeshResult result = rdmesh::generate_mesh(oracle, criteria);
+  rdmesh::MeshOptions options;
+  options.exudation.enabled = optimize;
+  const rdmesh::MeshResult result = rdmesh::generate_mesh(oracle, criteria, options);
   const auto t3 = std::chrono::steady_clock::now();
 
   const rdmesh::TetMesh& mesh = result.mesh;
@@ -53,5 +55,11 @@ RdmeshResult run_rdmesh(const std::string& shape_name, double h) {
   r.volume = q.volume;
   r.non_positive = q.non_positive;
   r.guard_rejections = result.stats.guard_rejections;
+  r.below_10_deg = q.below_10_deg;
+  const rdmesh::ExudationStats& ex = result.exudation;
+  r.min_dihedral_before_deg = ex.ran ? ex.min_dihedral_before_deg : q.min_dihedral_deg;
+  r.below_10_deg_before = ex.ran ? ex.histogram_before[0] + ex.histogram_before[1] : q.below_10_deg;
+  r.optimize_seconds = ex.seconds;
+  r.refine_seconds = r.seconds - ex.seconds;
   return r;
 }

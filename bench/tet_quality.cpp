@@ -65,6 +65,7 @@ MeshQuality mesh_quality(const std::vector<Vec3>& vertices, const std::vector<Te
     q.max_radius_edge = std::max(q.max_radius_edge, s.radius_edge);
     q.volume += std::abs(s.signed_volume);
     if (s.signed_volume <= 0) ++q.non_positive;
+    if (s.min_dihedral_deg < 10) ++q.below_10_deg;
   }
   return q;
 }

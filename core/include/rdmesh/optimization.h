@@ -23,7 +23,7 @@ struct ExudationOptions {
   double time_limit_seconds = 0;
   /// Vertices with an incident tetrahedron whose smallest dihedral angle is
   /// below this bound (degrees) are pumped, worst first.
-  double sliver_bound_deg = 20;
+  double sliver_bound_deg = 25;
   /// Weight bound: a vertex's weight stays <= this fraction of the squared
   /// distance to its nearest neighbour. CDE+00 prove that no vertex gets
   /// hidden for (alpha N(v))^2 with alpha < 1/2 (ratio < 0.25); larger bounds
