@@ -93,6 +93,7 @@ Criteria resolve_criteria(const Options& opt, const LoadedInput& input) {
   if (opt.cell_size) c.cell_size = ScalarField::uniform(*opt.cell_size);
   // Curves follow the facet size unless told otherwise.
   c.edge_size = c.facet_size;
+  if (h.edge_size && !opt.size) c.edge_size = *h.edge_size;
   if (opt.edge_size) c.edge_size = ScalarField::uniform(*opt.edge_size);
   // Facet distance follows the facet size (1/10) unless given.
   const Point3 center = input.oracle->bounding_box().center();

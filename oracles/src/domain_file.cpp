@@ -22,7 +22,7 @@ namespace {
 using Json = nlohmann::ordered_json;
 
 constexpr const char* kTopKeys[] = {"description",    "bbox",        "functions",  "subdomains",
-                                    "curves",         "size",        "facet_size", "cell_size",
+                                    "curves",         "size",        "edge_size",  "facet_size", "cell_size",
                                     "facet_distance", "facet_angle", "radius_edge"};
 constexpr const char* kSubdomainKeys[] = {"name", "inside", "outside"};
 constexpr const char* kCurveKeys[] = {"name", "x", "y", "z", "t", "points"};
@@ -305,6 +305,7 @@ class Parser {
   CriteriaHints parse_hints(const Json& doc, Point3 center) const {
     CriteriaHints h;
     h.size = size_field(doc, "size", center);
+    h.edge_size = size_field(doc, "edge_size", center);
     h.facet_size = size_field(doc, "facet_size", center);
     h.cell_size = size_field(doc, "cell_size", center);
     h.facet_distance = positive_number(doc, "facet_distance", INFINITY);

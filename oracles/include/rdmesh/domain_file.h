@@ -21,7 +21,7 @@
 //       around it); see rdmesh/implicit_oracle.h for splitting and corners.
 //       Errors read "ORIGIN: curve 'NAME': problem".
 //   Criteria hints (defaults that command-line options override):
-//   "size", "facet_size", "cell_size": positive number, or expression of x, y, z
+//   "size", "edge_size", "facet_size", "cell_size": positive number, or expression of x, y, z
 //       that must be positive and finite at the box center;
 //   "facet_distance", "radius_edge": positive finite numbers;
 //   "facet_angle": degrees, in (0, 60).
@@ -40,7 +40,7 @@ namespace rdmesh {
 
 /// Criteria keys found in the file; absent keys are nullopt.
 struct CriteriaHints {
-  std::optional<ScalarField> size, facet_size, cell_size;  ///< constant or expression of x,y,z
+  std::optional<ScalarField> size, edge_size, facet_size, cell_size;  ///< constant or expression of x,y,z
   std::optional<double> facet_distance, facet_angle, radius_edge;
 };
 
