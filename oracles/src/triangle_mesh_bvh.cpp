@@ -1,0 +1,117 @@
+// The triangle BVH: construction and the small geometric helpers of its queries.
+#include "triangle_mesh_bvh.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rdmesh {
+namespace {
+
+Box3 empty_box() {
+  const double inf = HUGE_VAL;
+  return {{inf, inf, inf}, {-inf, -inf, -inf}};
+}
+
+void grow(Box3& b, const Point3& p) {
+  b.lo = {std::min(b.lo.x, p.x), std::min(b.lo.y, p.y), std::min(b.lo.z, p.z)};
+  b.hi = {std::max(b.hi.x, p.x), std::max(b.hi.y, p.y), std::max(b.hi.z, p.z)};
+}
+
+double axis(const Point3& p, int k) { return k == 0 ? p.x : (k == 1 ? p.y : p.z); }
+
+}  // namespace
+
+TriangleBvh::TriangleBvh(const std::vector<Point3>& points,
+                         const std::vector<std::array<int, 3>>& triangles) {
+  const int n = static_cast<int>(triangles.size());
+  if (n == 0) return;
+  std::vector<Box3> boxes(n);
+  std::vector<Point3> centroids(n);
+  for (int t = 0; t < n; ++t) {
+    boxes[t] = empty_box();
+    for (int v : triangles[t]) grow(boxes[t], points[v]);
+    centroids[t] = (1.0 / 3) * (points[triangles[t][0]] + points[triangles[t][1]] +
+                                points[triangles[t][2]]);
+  }
+  order_.resize(n);
+  for (int t = 0; t < n; ++t) order_[t] = t;
+  nodes_.reserve(2 * (n / kLeafSize + 1));
+  build(0, n, 0, boxes, centroids);
+}
+
+int TriangleBvh::build(int begin, int end, int depth, const std::vector<Box3>& boxes,
+                       const std::vector<Point3>& centroids) {
+  const int index = static_cast<int>(nodes_.size());
+  nodes_.push_back({});
+  Box3 box = empty_box(), cbox = empty_box();
+  for (int i = begin; i < end; ++i) {
+    grow(box, boxes[order_[i]].lo);
+    grow(box, boxes[order_[i]].hi);
+    grow(cbox, centroids[order_[i]]);
+  }
+  nodes_[index].box = box;
+  if (end - begin <= kLeafSize || depth >= kMaxDepth - 1) {
+    nodes_[index].first = begin;
+    nodes_[index].count = end - begin;
+    return index;
+  }
+  const Point3 extent = cbox.hi - cbox.lo;
+  const int k = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+  const int mid = begin + (end - begin) / 2;
+  std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end,
+                   [&](int a, int b) {
+                     const double ca = axis(centroids[a], k), cb = axis(centroids[b], k);
+                     return ca < cb || (ca == cb && a < b);
+                   });
+  build(begin, mid, depth + 1, boxes, centroids);
+  const int right = build(mid, end, depth + 1, boxes, centroids);
+  nodes_[index].first = right;
+  nodes_[index].count = 0;
+  return index;
+}
+
+bool segment_meets_box(const Point3& a, const Point3& b, const Box3& box) {
+  double t0 = 0, t1 = 1;
+  const double lo[3] = {box.lo.x, box.lo.y, box.lo.z}, hi[3] = {box.hi.x, box.hi.y, box.hi.z};
+  const double pa[3] = {a.x, a.y, a.z}, pb[3] = {b.x, b.y, b.z};
+  for (int k = 0; k < 3; ++k) {
+    const double d = pb[k] - pa[k];
+    const double margin = 1e-12 * (std::abs(lo[k]) + std::abs(hi[k]) + (hi[k] - lo[k]));
+    const double l = lo[k] - margin, h = hi[k] + margin;
+    if (d == 0) {
+      if (pa[k] < l || pa[k] > h) return false;
+      continue;
+    }
+    double ta = (l - pa[k]) / d, tb = (h - pa[k]) / d;
+    if (ta > tb) std::swap(ta, tb);
+    t0 = std::max(t0, ta);
+    t1 = std::min(t1, tb);
+    if (t0 > t1 * (1 + 1e-12) + 1e-300) return false;
+  }
+  return true;
+}
+
+Point3 closest_on_triangle(const Point3& x, const Point3& p, const Point3& q, const Point3& r) {
+  // Voronoi regions of the vertices, then of the edges, then the face.
+  const Point3 ab = q - p, ac = r - p, ap = x - p;
+  const double d1 = dot(ab, ap), d2 = dot(ac, ap);
+  if (d1 <= 0 && d2 <= 0) return p;
+  const Point3 bp = x - q;
+  const double d3 = dot(ab, bp), d4 = dot(ac, bp);
+  if (d3 >= 0 && d4 <= d3) return q;
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return p + (d1 / (d1 - d3)) * ab;
+  const Point3 cp = x - r;
+  const double d5 = dot(ab, cp), d6 = dot(ac, cp);
+  if (d6 >= 0 && d5 <= d6) return r;
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return p + (d2 / (d2 - d6)) * ac;
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
+    return q + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (r - q);
+  }
+  const double denom = 1 / (va + vb + vc);
+  return p + (vb * denom) * ab + (vc * denom) * ac;
+}
+
+}  // namespace rdmesh
