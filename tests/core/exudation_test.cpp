@@ -85,11 +85,12 @@ struct Runs {
   MeshResult off, on;
 };
 
-Runs mesh_both(const DomainOracle& oracle, const Criteria& criteria) {
+Runs mesh_both(const DomainOracle& oracle, const Criteria& criteria, bool perturb = false) {
   MeshOptions off;
   off.exudation.enabled = false;
   MeshOptions on;
   on.exudation.self_check = true;
+  on.exudation.perturb = perturb;
   return {generate_mesh(oracle, criteria, off), generate_mesh(oracle, criteria, on)};
 }
 
@@ -178,6 +179,19 @@ TEST(Exudation, NestedSpheresKeepTheirInterfaceAndBothLabels) {
         return l;
       }());
   EXPECT_EQ(labels, (std::set<int>{1, 2}));
+}
+
+TEST(Exudation, PerturbationThenExudationKeepTheBoundary) {
+  const ImplicitOracle oracle = nested_spheres();
+  Criteria criteria = uniform_criteria(0.1);
+  criteria.facet_distance = 0.003;
+  const Runs r = mesh_both(oracle, criteria, /*perturb=*/true);
+  EXPECT_GT(r.on.exudation.perturb_moves_accepted, 0u);
+  EXPECT_GE(r.on.exudation.min_dihedral_after_perturb_deg, r.on.exudation.min_dihedral_before_deg);
+  EXPECT_GE(r.on.exudation.min_dihedral_after_deg, r.on.exudation.min_dihedral_after_perturb_deg);
+  expect_exudation_keeps_the_mesh(r, oracle, criteria, [](const Point3& p) {
+    return std::min(std::abs(norm(p) - 0.5), std::abs(norm(p) - 1.0));
+  });
 }
 
 TEST(Exudation, TimeLimitStopsEarlyAndLeavesAValidMesh) {

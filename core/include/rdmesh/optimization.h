@@ -39,6 +39,10 @@ struct ExudationOptions {
   /// by default, as in CGAL's exuder.
   bool keep_cell_size = false;
   bool keep_radius_edge = false;
+  /// Before pumping weights, move volume vertices incident to slivers along
+  /// the gradient of their worst dihedral angle (sliver perturbation), only
+  /// where the moved region lies inside one subdomain away from the boundary.
+  bool perturb = false;
   /// Debug self-check after exudation (slow): the regular triangulation is
   /// valid, both sides of every facet hold the same restricted data, and
   /// labels differ exactly across restricted facets. Throws InternalError.
@@ -55,6 +59,10 @@ struct ExudationStats {
   DihedralHistogram histogram_after{};
   std::size_t moves_tried = 0;     ///< vertices whose weight was pumped
   std::size_t moves_accepted = 0;  ///< weight changes applied to the triangulation
+  std::size_t perturb_moves_tried = 0;     ///< volume vertices the perturbation tried to move
+  std::size_t perturb_moves_accepted = 0;  ///< vertex moves kept
+  double min_dihedral_after_perturb_deg = 0;  ///< when ExudationOptions::perturb
+  double perturb_seconds = 0;                 ///< included in `seconds`
   bool time_limit_reached = false;
   double seconds = 0;
 };

@@ -12,6 +12,7 @@
 
 #include "rdmesh/errors.h"
 #include "tet_shape.h"
+#include "vertex_perturber.h"
 #include "weight_pump.h"
 
 namespace rdmesh::detail {
@@ -69,18 +70,60 @@ class Exuder {
         bound_cosine_(std::cos(options.sliver_bound_deg * M_PI / 180)) {}
 
   ExudationStats run() {
-    const auto start = std::chrono::steady_clock::now();
+    start_ = std::chrono::steady_clock::now();
     ExudationStats stats;
     stats.ran = true;
     measure(tr_, stats.min_dihedral_before_deg, stats.histogram_before);
-    WeightPump pump(tr_, prepare(), limits_);
+    std::uint32_t next_stamp = prepare();
+    if (options_.perturb) {
+      VertexPerturber perturber(tr_, next_stamp);
+      process(
+          [&](Vertex_handle v, int) -> const std::vector<Cell_handle>* {
+            if (v->info().dim != FeatureDim::kVolume) return nullptr;
+            ++stats.perturb_moves_tried;
+            if (!perturber.perturb(v, nearest_distance(v))) return nullptr;
+            ++stats.perturb_moves_accepted;
+            return &perturber.new_cells();
+          },
+          stats.time_limit_reached);
+      next_stamp = perturber.next_stamp();
+      DihedralHistogram histogram;
+      measure(tr_, stats.min_dihedral_after_perturb_deg, histogram);
+      stats.perturb_seconds = elapsed();
+      if (!stats.time_limit_reached) prepare();  // nearest neighbours moved
+    }
+    WeightPump pump(tr_, next_stamp, limits_);
+    if (!stats.time_limit_reached) {
+      process(
+          [&](Vertex_handle v, int id) -> const std::vector<Cell_handle>* {
+            ++stats.moves_tried;
+            const double max_weight = options_.max_weight_ratio * nearest_sq_[id];
+            if (pump.pump(v, max_weight) != WeightPump::Outcome::kAccepted) return nullptr;
+            ++stats.moves_accepted;
+            return &pump.new_cells();
+          },
+          stats.time_limit_reached);
+    }
+    measure(tr_, stats.min_dihedral_after_deg, stats.histogram_after);
+    stats.seconds = elapsed();
+    return stats;
+  }
+
+ private:
+  double elapsed() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+
+  /// The worst-first loop: `step(v, id)` tries vertex v and returns the cells
+  /// it created when it changed the mesh (nullptr otherwise). A vertex is
+  /// tried again only after its star changed.
+  template <class Step>
+  void process(Step step, bool& time_limit_reached) {
     std::vector<Cell_handle> star;
     while (!queue_.empty()) {
-      if (options_.time_limit_seconds > 0 &&
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() >
-              options_.time_limit_seconds) {
-        stats.time_limit_reached = true;
-        break;
+      if (options_.time_limit_seconds > 0 && elapsed() > options_.time_limit_seconds) {
+        time_limit_reached = true;
+        return;
       }
       const QueuedVertex top = queue_.top();
       queue_.pop();
@@ -95,13 +138,11 @@ class Exuder {
         continue;
       }
       dirty_[id] = 0;  // tried on this star: wait until the star changes
-      ++stats.moves_tried;
-      const double max_weight = options_.max_weight_ratio * nearest_sq_[id];
-      if (pump.pump(v, max_weight) != WeightPump::Outcome::kAccepted) continue;
-      ++stats.moves_accepted;
+      const std::vector<Cell_handle>* created = step(v, id);
+      if (created == nullptr) continue;
       ++moves_[id];
-      // Vertices of the new star: their stars changed.
-      for (const Cell_handle& c : pump.new_cells()) {
+      // Vertices of the new cells: their stars changed.
+      for (const Cell_handle& c : *created) {
         if (!in_domain(tr_, c)) continue;
         const double cosine = cell_cosine(c);
         if (!(cosine > bound_cosine_)) continue;
@@ -111,18 +152,24 @@ class Exuder {
         }
       }
     }
-    measure(tr_, stats.min_dihedral_after_deg, stats.histogram_after);
-    stats.seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return stats;
   }
 
- private:
+  /// Distance from v to its nearest neighbour in the triangulation.
+  double nearest_distance(Vertex_handle v) const {
+    std::vector<Vertex_handle> adjacent;
+    tr_.finite_adjacent_vertices(v, std::back_inserter(adjacent));
+    double d2 = std::numeric_limits<double>::infinity();
+    for (const Vertex_handle& u : adjacent)
+      d2 = std::min(d2, squared_norm(to_point3(u->point()) - to_point3(v->point())));
+    return std::sqrt(d2);
+  }
+
   /// Vertex ids, nearest-neighbour distances, the first queue; returns the next free stamp.
   std::uint32_t prepare() {
     std::uint32_t max_stamp = 0;
     for (auto c = tr_.all_cells_begin(); c != tr_.all_cells_end(); ++c)
       max_stamp = std::max(max_stamp, c->info().stamp);
+    queue_ = {};
     int n = 0;
     for (auto v = tr_.finite_vertices_begin(); v != tr_.finite_vertices_end(); ++v)
       v->info().index = n++;
@@ -171,6 +218,7 @@ class Exuder {
   std::vector<int> moves_;    ///< accepted moves per vertex
   std::vector<char> dirty_;   ///< star changed since the vertex was last tried
   std::priority_queue<QueuedVertex> queue_;
+  std::chrono::steady_clock::time_point start_;
 };
 
 void check_invariants(const Triangulation& tr) {
