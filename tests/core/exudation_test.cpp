@@ -14,6 +14,7 @@
 #include <set>
 #include <tuple>
 
+#include "capped_cylinder_oracle.h"
 #include "mesh_checks.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/implicit_oracle.h"
@@ -72,6 +73,19 @@ std::set<Triangle> triangle_set(const TetMesh& mesh) {
 }
 
 /// Smallest dihedral angle of the mesh, from the io layer's measure (independent of the core's).
+using Edge = std::tuple<std::array<double, 6>, int>;  ///< sorted end coordinates, curve
+
+/// The feature edges as coordinates.
+std::set<Edge> edge_set(const TetMesh& mesh) {
+  std::set<Edge> out;
+  for (std::size_t e = 0; e < mesh.edges.size(); ++e) {
+    Point3 a = mesh.vertices[mesh.edges[e][0]], b = mesh.vertices[mesh.edges[e][1]];
+    if (std::tie(b.x, b.y, b.z) < std::tie(a.x, a.y, a.z)) std::swap(a, b);
+    out.insert({{a.x, a.y, a.z, b.x, b.y, b.z}, mesh.edge_curve[e].value});
+  }
+  return out;
+}
+
 double min_dihedral_deg(const TetMesh& mesh) {
   double worst = 180;
   for (const auto& t : mesh.tets) {
@@ -192,6 +206,34 @@ TEST(Exudation, PerturbationThenExudationKeepTheBoundary) {
   expect_exudation_keeps_the_mesh(r, oracle, criteria, [](const Point3& p) {
     return std::min(std::abs(norm(p) - 0.5), std::abs(norm(p) - 1.0));
   });
+}
+
+TEST(Exudation, CappedCylinderKeepsItsSharpRims) {
+  const test::CappedCylinderOracle oracle(0.5, 0.5);
+  Criteria criteria;
+  criteria.edge_size = criteria.facet_size = criteria.cell_size = ScalarField::uniform(0.1);
+  criteria.facet_distance = 0.01;
+  const Runs r = mesh_both(oracle, criteria);
+  const ExudationStats& s = r.on.exudation;
+  std::printf("exudation (capped cylinder): min dihedral %.2f -> %.2f deg, tets < 5 deg: %zu -> %zu\n",
+              s.min_dihedral_before_deg, s.min_dihedral_after_deg, s.histogram_before[0],
+              s.histogram_after[0]);
+  EXPECT_GT(s.moves_accepted, 0u);
+  EXPECT_GE(s.min_dihedral_after_deg, s.min_dihedral_before_deg);
+  EXPECT_LE(s.histogram_after[0], s.histogram_before[0]);
+  ASSERT_FALSE(r.off.mesh.edges.empty());
+  EXPECT_TRUE(edge_set(r.on.mesh) == edge_set(r.off.mesh));
+  EXPECT_TRUE(triangle_set(r.on.mesh) == triangle_set(r.off.mesh));
+  EXPECT_EQ(r.on.mesh.corner_vertices.size(), r.off.mesh.corner_vertices.size());
+  EXPECT_EQ(r.on.stats.unmeshed_feature_edges, 0u);
+  test::expect_positive_orientation(r.on.mesh);
+  test::expect_conforming(r.on.mesh);
+  // Every feature edge is an edge of a tetrahedron.
+  std::set<std::pair<int, int>> tet_edges;
+  for (const auto& t : r.on.mesh.tets)
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) tet_edges.insert(std::minmax(t[i], t[j]));
+  for (const auto& e : r.on.mesh.edges) EXPECT_TRUE(tet_edges.count(std::minmax(e[0], e[1])));
 }
 
 TEST(Exudation, TimeLimitStopsEarlyAndLeavesAValidMesh) {
