@@ -5,12 +5,14 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
 #include "rdmesh/atomic_file.h"
+#include "rdmesh/cad_oracle.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/mesh_writers.h"
 
@@ -18,7 +20,7 @@ namespace rdmesh::cli {
 namespace fs = std::filesystem;
 
 void add_options(CLI::App& app, Options& opt) {
-  app.add_option("input", opt.input, "Domain: .json implicit domain file")->required();
+  app.add_option("input", opt.input, "Domain: .json implicit domain file, or a .step/.stp/.brep/.iges/.igs CAD model")->required();
   app.add_option("-o,--output", opt.output,
                  "Output mesh: .mesh (Medit), .msh (Gmsh 4.1) or .vtu (VTK); default INPUT-stem.msh");
   app.add_option("--size", opt.size, "Target size h: edge, facet and cell size = h, facet distance h/10");
@@ -46,22 +48,37 @@ void add_options(CLI::App& app, Options& opt) {
           "SECONDS"));
   app.add_option("--report", opt.report, "Write a JSON report of the run to this file");
   app.add_flag("-q,--quiet", opt.quiet, "No progress and no summary");
+  app.add_flag("--heal", opt.heal,
+               "CAD input: run OpenCASCADE shape healing first and report what it changed");
 }
 
-LoadedInput load_input(const std::string& path) {
+LoadedInput load_input(const std::string& path) { return load_input(path, false); }
+
+LoadedInput load_input(const Options& opt) { return load_input(opt.input, opt.heal); }
+
+LoadedInput load_input(const std::string& path, bool heal) {
+  if (is_cad_file(path)) {
+    CadOptions options;
+    options.heal = heal;
+    std::unique_ptr<CadOracle> cad = load_cad_file(path, options);
+    if (heal) {
+      for (const std::string& line : cad->log()) std::cerr << path << ": " << line << "\n";
+    }
+    return {std::move(cad), {}};
+  }
   std::string ext = fs::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
   if (ext == ".json") {
     LoadedDomain d = load_domain_file(path);
     return {std::move(d.oracle), std::move(d.hints)};
   }
-  if (ext == ".step" || ext == ".stp" || ext == ".brep" || ext == ".iges" || ext == ".igs" ||
-      ext == ".off" || ext == ".stl" || ext == ".obj" || ext == ".ply") {
+  if (ext == ".off" || ext == ".stl" || ext == ".obj" || ext == ".ply") {
     throw InputError(path, "input format '" + ext +
                                "' is not supported by this version of rdmesh (only .json "
-                               "implicit domains are)");
+                               "implicit domains and .step/.stp/.brep/.iges/.igs CAD models are)");
   }
-  throw InputError(path, "unknown input extension '" + ext + "' (expected .json)");
+  throw InputError(path, "unknown input extension '" + ext +
+                               "' (expected .json, .step, .stp, .brep, .iges or .igs)");
 }
 
 void check_writable(const std::string& path) {

@@ -26,6 +26,7 @@ struct Options {
   double exude_time_limit = 0;               ///< --exude-time-limit SECONDS, 0 = none
   std::string report;  ///< JSON report path, empty = none
   bool quiet = false;
+  bool heal = false;  ///< --heal: OpenCASCADE shape healing of CAD input
 };
 
 void add_options(CLI::App& app, Options& opt);
@@ -38,6 +39,10 @@ struct LoadedInput {
 
 /// Chooses the reader by extension; throws InputError naming the file.
 LoadedInput load_input(const std::string& path);
+/// Same, healing CAD input first when `heal` (what healing changed goes to stderr).
+LoadedInput load_input(const std::string& path, bool heal);
+/// load_input(opt.input, opt.heal).
+LoadedInput load_input(const Options& opt);
 
 /// Throws OutputError early (before meshing) when `path` cannot be written.
 void check_writable(const std::string& path);

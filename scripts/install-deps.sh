@@ -7,6 +7,10 @@ packages=(
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev libeigen3-dev
   libmuparser-dev nlohmann-json3-dev libcli11-dev libgtest-dev
   python3-meshio gmsh   # independent readers used by the round-trip tests
+  # OpenCASCADE for cad/ (STEP/IGES need data-exchange, whose CMake config also
+  # wants the ocaf and visualization dev packages; TKernel links TBB).
+  libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
+  libocct-data-exchange-dev libocct-ocaf-dev libocct-visualization-dev libtbb-dev
 )
 missing=()
 for p in "${packages[@]}"; do

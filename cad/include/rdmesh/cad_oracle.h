@@ -1,0 +1,115 @@
+// The CAD oracle: a STEP, BREP or IGES model answered exactly by OpenCASCADE.
+//
+// Reading. `.step/.stp` and `.iges/.igs` go through OpenCASCADE's translators,
+// which convert every length to millimetres (the file's own unit is honoured);
+// `.brep` has no unit and is read as is. Solids become subdomains 1..n in file
+// order (assembly instances expanded), named after the STEP representation item
+// when it has a name, else "solid_<id>". A file without solids has its faces
+// sewn; every closed shell becomes a solid, open shells are an InputError.
+//
+// Conformity. With several solids the model is made a conformal complex first
+// (OpenCASCADE's general fuse, BOPAlgo_Builder): touching solids then share
+// their common faces, which become interface patches between two subdomains.
+// Where solids overlap, the overlap belongs to the first solid in file order.
+//
+// Features. Faces are patches 1..m (ordered by solid, then by the solid's
+// face order); a face with the same subdomain on both sides is not a patch.
+// Edges of the patches are curves, except seam edges of periodic faces and
+// degenerated edges (sphere poles); a curve is closed when its two vertices are
+// the same vertex. Corners are the vertices ending open curves, ids in order of
+// first appearance. Each curve is the edge's own 3D curve, shifted by a linear
+// blend (at most the vertex tolerance) so that it ends exactly at its corners.
+//
+// Queries. locate() classifies in the solids (BRepClass3d_SolidClassifier)
+// after bounding-box pruning; intersect() intersects the segment with the true
+// faces whose boxes it meets (IntCurvesFace_Intersector) and returns the hit
+// nearest to a; initial_points() evaluates the true surface at interior points
+// of a coarse BRepMesh tessellation (used only for seeding); project() is
+// GeomAPI_ProjectPointOnSurf, with BRepExtrema when the foot point falls
+// outside the face. Queries are const and thread-safe: OpenCASCADE's stateful
+// intersectors and classifiers are kept in per-thread caches.
+//
+// Errors. Every OpenCASCADE exception is caught here and rethrown as
+// InputError (while loading) or OracleError (in queries).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "rdmesh/oracle.h"
+
+namespace rdmesh {
+
+/// How a CAD file is loaded.
+struct CadOptions {
+  /// Run OpenCASCADE shape healing (ShapeFix_Shape) before meshing; what it
+  /// changed is reported in CadOracle::log().
+  bool heal = false;
+  /// Check the B-rep with BRepCheck_Analyzer and reject an invalid one.
+  bool check_validity = true;
+};
+
+/// A B-rep model as a DomainOracle (see the file comment).
+class CadOracle final : public DomainOracle {
+ public:
+  struct Model;  ///< OpenCASCADE data, defined in cad/src only
+
+  /// Takes ownership of a built model (use load_cad_file or make_cad_test_oracle).
+  explicit CadOracle(std::unique_ptr<Model> model);
+  ~CadOracle() override;
+  CadOracle(const CadOracle&) = delete;
+  CadOracle& operator=(const CadOracle&) = delete;
+
+  Box3 bounding_box() const override;
+  SubdomainId locate(const Point3& p) const override;
+  /// The transversal crossing nearest to a; when none is found but the end
+  /// labels differ, the label change is bracketed by bisection on locate().
+  std::optional<SurfaceHit> intersect(const Point3& a, const Point3& b) const override;
+  std::vector<SubdomainInfo> subdomains() const override;
+  std::vector<PatchInfo> patches() const override;
+  std::vector<Point3> initial_points(PatchId patch) const override;
+  std::optional<Point3> project(const Point3& p, PatchId patch) const override;
+  /// max(1e-9 x box diagonal, largest face/edge tolerance), at most 1e-5 x diagonal.
+  double tolerance() const override;
+  std::vector<CornerInfo> corners() const override;
+  std::vector<CurveInfo> curves() const override;
+  const Curve& curve(CurveId id) const override;
+
+  /// OpenCASCADE's exact volume (BRepGProp) of subdomain `id`; all subdomains when id is 0.
+  double exact_volume(SubdomainId id = kOutside) const;
+  /// Number of solids read from the file (before the general fuse).
+  int input_solids() const;
+  /// What loading did (units, fuse, healing), one line per entry.
+  const std::vector<std::string>& log() const;
+
+ private:
+  std::unique_ptr<Model> model_;
+  std::uint64_t serial_;  // identifies this oracle in the per-thread caches
+};
+
+/// True for the extensions load_cad_file reads (.step .stp .brep .iges .igs, any case).
+bool is_cad_file(const std::string& path);
+
+/// Reads a CAD file and builds its oracle. Throws InputError naming the file for
+/// a missing, unreadable, corrupt or truncated file, a file without solids or
+/// faces, an open shell, an invalid B-rep (BRepCheck) or a failed fuse/healing.
+std::unique_ptr<CadOracle> load_cad_file(const std::string& path, const CadOptions& options = {});
+
+/// Small models built with OpenCASCADE itself, for tests and samples (millimetres).
+enum class CadTestShape {
+  box,                 ///< [0,10] x [0,20] x [0,30]
+  cylinder,            ///< radius 5, height 12, axis z
+  box_minus_cylinder,  ///< 20 x 20 x 10 box minus a radius-4 hole through its middle
+  two_boxes,           ///< [0,10]^3 and [10,20] x [0,10]^2: one shared face
+  sphere,              ///< radius 10 at the origin
+};
+
+/// The oracle of a test shape (the same pipeline as a file: fuse, features, seeds).
+std::unique_ptr<CadOracle> make_cad_test_oracle(CadTestShape shape);
+
+/// Writes a test shape to `path` as STEP, BREP or IGES (by extension); throws OutputError.
+void write_cad_test_shape(CadTestShape shape, const std::string& path);
+
+}  // namespace rdmesh

@@ -1,0 +1,242 @@
+// From a read shape to the oracle's data: general fuse of touching solids,
+// subdomains, patches (faces with their two sides), curves (non-seam,
+// non-degenerated edges) and corners (vertices ending open curves).
+#include <BOPAlgo_Builder.hxx>
+#include <BRepBndLib.hxx>
+#include <BRepLib.hxx>
+#include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
+#include <Bnd_Box.hxx>
+#include <GeomAdaptor_Curve.hxx>
+#include <Geom_BSplineCurve.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
+#include <TopoDS_Edge.hxx>
+#include <TopoDS_Vertex.hxx>
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include "cad_model.h"
+
+namespace rdmesh::cad {
+namespace {
+
+Point3 to_point(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
+
+Box3 box_of(const TopoDS_Shape& s, double margin) {
+  Bnd_Box b;
+  BRepBndLib::Add(s, b, false);
+  if (b.IsVoid()) return {};
+  double x0, y0, z0, x1, y1, z1;
+  b.Get(x0, y0, z0, x1, y1, z1);
+  return {{x0 - margin, y0 - margin, z0 - margin}, {x1 + margin, y1 + margin, z1 + margin}};
+}
+
+// Solids in file order with their subdomain ids, after the general fuse.
+void fuse_solids(const ReadShape& read, CadOracle::Model& m, const std::string& source) {
+  std::vector<TopoDS_Solid> input;
+  for (TopExp_Explorer ex(read.shape, TopAbs_SOLID); ex.More(); ex.Next()) {
+    input.push_back(TopoDS::Solid(ex.Current()));
+  }
+  m.input_solids = static_cast<int>(input.size());
+  if (input.empty()) throw InputError(source, "the model holds no solid");
+  for (std::size_t i = 0; i < input.size(); ++i) {
+    std::string name = "solid_" + std::to_string(i + 1);
+    for (const auto& [shape, n] : read.solid_names) {
+      if (shape.IsSame(input[i])) name = n;
+    }
+    m.subdomains.push_back({SubdomainId(static_cast<int>(i) + 1), name});
+  }
+  if (input.size() == 1) {
+    m.pieces.push_back({input[0], SubdomainId(1), {}});
+    m.shape = input[0];
+    return;
+  }
+  BOPAlgo_Builder builder;
+  for (const TopoDS_Solid& s : input) builder.AddArgument(s);
+  builder.SetRunParallel(false);
+  builder.SetNonDestructive(true);
+  builder.Perform();
+  if (builder.HasErrors()) {
+    throw InputError(source, "the general fuse of the " + std::to_string(input.size()) +
+                                 " solids failed (BOPAlgo_Builder); try --heal");
+  }
+  TopTools_IndexedMapOfShape taken;
+  for (std::size_t i = 0; i < input.size(); ++i) {
+    const TopTools_ListOfShape& images = builder.Modified(input[i]);
+    std::vector<TopoDS_Shape> parts;
+    if (images.IsEmpty()) {
+      if (!builder.IsDeleted(input[i])) parts.push_back(input[i]);
+    } else {
+      for (const TopoDS_Shape& s : images) parts.push_back(s);
+    }
+    for (const TopoDS_Shape& s : parts) {
+      if (s.ShapeType() != TopAbs_SOLID || taken.Contains(s)) continue;  // overlap: first wins
+      taken.Add(s);
+      m.pieces.push_back({TopoDS::Solid(s), SubdomainId(static_cast<int>(i) + 1), {}});
+    }
+  }
+  TopoDS_Compound all;
+  BRep_Builder b;
+  b.MakeCompound(all);
+  for (const SolidPiece& p : m.pieces) b.Add(all, p.solid);
+  m.shape = all;
+  m.log.push_back("general fuse of " + std::to_string(input.size()) +
+                  " solids: " + std::to_string(m.pieces.size()) + " conformal pieces");
+}
+
+void collect_faces(CadOracle::Model& m, TopTools_IndexedMapOfShape& patch_faces) {
+  TopTools_IndexedDataMapOfShapeListOfShape face_solids;
+  for (const SolidPiece& p : m.pieces) {
+    TopExp::MapShapesAndAncestors(p.solid, TopAbs_FACE, TopAbs_SOLID, face_solids);
+  }
+  TopTools_IndexedMapOfShape ordered;
+  for (const SolidPiece& p : m.pieces) TopExp::MapShapes(p.solid, TopAbs_FACE, ordered);
+  for (int i = 1; i <= ordered.Extent(); ++i) {
+    const TopoDS_Face face = TopoDS::Face(ordered(i));
+    std::vector<int> labels;
+    for (const SolidPiece& p : m.pieces) {
+      // Count each side: a face used twice by one solid (a crack) separates nothing.
+      for (TopExp_Explorer ex(p.solid, TopAbs_FACE); ex.More(); ex.Next()) {
+        if (ex.Current().IsSame(face)) labels.push_back(p.id.value);
+      }
+    }
+    if (labels.size() == 1) labels.insert(labels.begin(), 0);
+    std::sort(labels.begin(), labels.end());
+    if (labels.size() != 2 || labels[0] == labels[1]) continue;
+    FacePatch fp;
+    fp.face = face;
+    fp.surface = BRep_Tool::Surface(face);
+    if (fp.surface.IsNull()) continue;
+    BRepTools::UVBounds(face, fp.u0, fp.u1, fp.v0, fp.v1);
+    fp.box = box_of(face, 0);
+    fp.classifier = std::make_unique<BRepTopAdaptor_FClass2d>(face, BRep_Tool::Tolerance(face));
+    const int id = static_cast<int>(m.faces.size()) + 1;
+    m.patches.push_back({PatchId(id), "face_" + std::to_string(id), SubdomainId(labels[0]),
+                         SubdomainId(labels[1])});
+    m.faces.push_back(std::move(fp));
+    patch_faces.Add(face);
+  }
+  if (m.faces.empty()) throw InputError("the model's solids have no boundary face");
+}
+
+int curve_samples(const Handle(Geom_Curve) & c, double t0, double t1) {
+  GeomAdaptor_Curve a(c, t0, t1);
+  switch (a.GetType()) {
+    case GeomAbs_Line:
+      return 4;
+    case GeomAbs_Circle:
+    case GeomAbs_Ellipse:
+      return 8 + static_cast<int>(32 * (t1 - t0) / (2 * M_PI));
+    case GeomAbs_BSplineCurve:
+    case GeomAbs_BezierCurve:
+      return std::clamp(4 * a.NbIntervals(GeomAbs_C2) * std::max(a.Degree(), 2), 16, 512);
+    default:
+      return 48;
+  }
+}
+
+void collect_curves(CadOracle::Model& m, const TopTools_IndexedMapOfShape& patch_faces) {
+  TopTools_IndexedDataMapOfShapeListOfShape edge_faces;
+  TopExp::MapShapesAndAncestors(m.shape, TopAbs_EDGE, TopAbs_FACE, edge_faces);
+  TopTools_IndexedMapOfShape vertices;  // corner ids
+  std::map<int, std::set<int>> corner_curves, corner_patches;
+  for (int i = 1; i <= edge_faces.Extent(); ++i) {
+    const TopoDS_Edge edge = TopoDS::Edge(edge_faces.FindKey(i));
+    if (BRep_Tool::Degenerated(edge)) continue;
+    std::set<int> patches;
+    bool seam = false;
+    for (const TopoDS_Shape& f : edge_faces(i)) {
+      const int id = patch_faces.FindIndex(f);
+      if (id > 0) patches.insert(id);
+      if (BRep_Tool::IsClosed(edge, TopoDS::Face(f))) seam = true;
+    }
+    if (patches.empty() || (seam && patches.size() == 1)) continue;
+    double t0 = 0, t1 = 0;
+    Handle(Geom_Curve) c = BRep_Tool::Curve(edge, t0, t1);  // with the edge's location
+    if (c.IsNull() || !(t1 > t0)) continue;
+    TopoDS_Vertex v0, v1;
+    TopExp::Vertices(TopoDS::Edge(edge.Oriented(TopAbs_FORWARD)), v0, v1);
+    if (v0.IsNull() || v1.IsNull()) continue;
+    const bool closed = v0.IsSame(v1);
+    const Point3 q0 = to_point(BRep_Tool::Pnt(v0)), q1 = to_point(BRep_Tool::Pnt(v1));
+    const int id = static_cast<int>(m.curves.size()) + 1;
+    CurveInfo info;
+    info.id = CurveId(id);
+    info.name = "edge_" + std::to_string(id);
+    info.closed = closed;
+    info.t_begin = t0;
+    info.t_end = t1;
+    for (int p : patches) info.patches.push_back(PatchId(p));
+    if (!closed) {
+      const int a = vertices.Add(v0), b = vertices.Add(v1);
+      info.start = CornerId(a);
+      info.end = CornerId(b);
+      for (int q : {a, b}) {
+        corner_curves[q].insert(id);
+        corner_patches[q].insert(patches.begin(), patches.end());
+      }
+    }
+    m.curves.push_back(std::make_unique<EdgeCurve>(c, t0, t1, q0, q1, curve_samples(c, t0, t1)));
+    m.curve_infos.push_back(std::move(info));
+  }
+  for (int q = 1; q <= vertices.Extent(); ++q) {
+    CornerInfo corner;
+    corner.id = CornerId(q);
+    corner.point = to_point(BRep_Tool::Pnt(TopoDS::Vertex(vertices(q))));
+    for (int c : corner_curves[q]) corner.curves.push_back(CurveId(c));
+    for (int p : corner_patches[q]) corner.patches.push_back(PatchId(p));
+    m.corners.push_back(std::move(corner));
+  }
+}
+
+double max_tolerance(const TopoDS_Shape& s) {
+  double t = 0;
+  for (TopExp_Explorer ex(s, TopAbs_FACE); ex.More(); ex.Next()) {
+    t = std::max(t, BRep_Tool::Tolerance(TopoDS::Face(ex.Current())));
+  }
+  for (TopExp_Explorer ex(s, TopAbs_EDGE); ex.More(); ex.Next()) {
+    t = std::max(t, BRep_Tool::Tolerance(TopoDS::Edge(ex.Current())));
+  }
+  return t;
+}
+
+}  // namespace
+
+std::unique_ptr<CadOracle::Model> build_model(ReadShape read, const std::string& source) {
+  auto m = std::make_unique<CadOracle::Model>();
+  m->log = std::move(read.log);
+  try {
+    BRepLib::BuildCurves3d(read.shape);
+    fuse_solids(read, *m, source);
+    const Box3 tight = box_of(m->shape, 0);
+    const double diag = tight.diagonal();
+    if (!(diag > 0) || !std::isfinite(diag))
+      throw InputError(source, "the model is empty or degenerate");
+    m->tolerance = std::clamp(max_tolerance(m->shape), 1e-9 * diag, 1e-5 * diag);
+    m->box = box_of(m->shape, 0.01 * diag);
+    for (SolidPiece& p : m->pieces) p.box = box_of(p.solid, m->tolerance);
+    TopTools_IndexedMapOfShape patch_faces;
+    collect_faces(*m, patch_faces);
+    for (FacePatch& f : m->faces) {
+      f.box.lo = f.box.lo - Point3{m->tolerance, m->tolerance, m->tolerance};
+      f.box.hi = f.box.hi + Point3{m->tolerance, m->tolerance, m->tolerance};
+    }
+    collect_curves(*m, patch_faces);
+    compute_seeds(*m);
+  } catch (const InputError& e) {
+    if (!e.file().empty() || source.empty()) throw;
+    throw InputError(source, e.what());
+  } catch (const Standard_Failure& e) {
+    throw InputError(source, "OpenCASCADE failed while preparing the model: " + describe(e));
+  }
+  return m;
+}
+
+}  // namespace rdmesh::cad

@@ -1,0 +1,167 @@
+// EdgeCurve: exact queries on an edge's 3D curve (Geom_Curve evaluation is
+// const and cache-free, hence thread-safe). Arc length is composite 5-point
+// Gauss-Legendre over fixed cells with a cumulative table, so length() is
+// additive by construction and parameter_at_length() inverts it by Newton.
+#include <algorithm>
+#include <cmath>
+#include <gp_Pnt.hxx>
+#include <gp_Vec.hxx>
+
+#include "cad_model.h"
+
+namespace rdmesh::cad {
+namespace {
+
+constexpr double kNodes[5] = {0.0, -0.5384693101056831, 0.5384693101056831, -0.9061798459386640,
+                              0.9061798459386640};
+constexpr double kWeights[5] = {0.5688888888888889, 0.4786286704993665, 0.4786286704993665,
+                                0.2369268850561891, 0.2369268850561891};
+
+Point3 to_point(const gp_XYZ& p) { return {p.X(), p.Y(), p.Z()}; }
+
+}  // namespace
+
+EdgeCurve::EdgeCurve(Handle(Geom_Curve) curve, double t0, double t1, Point3 q0, Point3 q1,
+                     int samples)
+    : curve_(std::move(curve)), t0_(t0), t1_(t1), samples_(std::max(samples, 4)) {
+  d0_ = q0 - to_point(curve_->Value(t0_).XYZ());
+  d1_ = q1 - to_point(curve_->Value(t1_).XYZ());
+  const int cells = std::max(8, 2 * samples_);
+  cell_ = (t1_ - t0_) / cells;
+  cumulative_.assign(cells + 1, 0.0);
+  for (int k = 0; k < cells; ++k) {
+    cumulative_[k + 1] = cumulative_[k] + speed_integral(t0_ + k * cell_, t0_ + (k + 1) * cell_);
+  }
+}
+
+Point3 EdgeCurve::point(double t) const {
+  if (t == t0_) return to_point(curve_->Value(t0_).XYZ()) + d0_;
+  if (t == t1_) return to_point(curve_->Value(t1_).XYZ()) + d1_;
+  const double s = (t - t0_) / (t1_ - t0_);
+  return to_point(curve_->Value(t).XYZ()) + (1 - s) * d0_ + s * d1_;
+}
+
+Point3 EdgeCurve::derivative(double t) const {
+  gp_Pnt p;
+  gp_Vec v;
+  curve_->D1(t, p, v);
+  return to_point(v.XYZ()) + (1.0 / (t1_ - t0_)) * (d1_ - d0_);
+}
+
+double EdgeCurve::speed_integral(double u, double v) const {
+  const double half = 0.5 * (v - u), mid = 0.5 * (u + v);
+  double sum = 0;
+  for (int i = 0; i < 5; ++i) sum += kWeights[i] * norm(derivative(mid + half * kNodes[i]));
+  return half * sum;
+}
+
+double EdgeCurve::arc(double t) const {
+  t = std::clamp(t, t0_, t1_);
+  const int cells = static_cast<int>(cumulative_.size()) - 1;
+  const int k = std::clamp(static_cast<int>((t - t0_) / cell_), 0, cells - 1);
+  return cumulative_[k] + speed_integral(t0_ + k * cell_, t);
+}
+
+double EdgeCurve::length(double ta, double tb) const { return std::max(0.0, arc(tb) - arc(ta)); }
+
+double EdgeCurve::parameter_at_length(double ta, double s) const {
+  const double target = arc(ta) + s;
+  if (target >= cumulative_.back()) return t1_;
+  if (s <= 0) return ta;
+  // Bracket in the table, then safeguarded Newton on arc(t) - target.
+  const auto it = std::upper_bound(cumulative_.begin(), cumulative_.end(), target);
+  const int k = std::max(0, static_cast<int>(it - cumulative_.begin()) - 1);
+  double lo = std::max(ta, t0_ + k * cell_), hi = std::min(t1_, t0_ + (k + 1) * cell_);
+  double t = 0.5 * (lo + hi);
+  for (int it2 = 0; it2 < 60; ++it2) {
+    const double f = arc(t) - target;
+    if (f > 0)
+      hi = t;
+    else
+      lo = t;
+    const double speed = norm(derivative(t));
+    double next = speed > 0 ? t - f / speed : 0.5 * (lo + hi);
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    if (std::fabs(next - t) <= 1e-15 * (t1_ - t0_) + 1e-300) return next;
+    t = next;
+  }
+  return t;
+}
+
+int EdgeCurve::samples_over(double ta, double tb) const {
+  const double fraction = (tb - ta) / (t1_ - t0_);
+  return std::max(4, static_cast<int>(std::ceil(samples_ * fraction)));
+}
+
+double EdgeCurve::closest(const Point3& p, double ta, double tb) const {
+  if (!(tb > ta)) return ta;
+  const int n = samples_over(ta, tb);
+  const double h = (tb - ta) / n;
+  auto d2 = [&](double t) { return squared_norm(point(t) - p); };
+  int best = 0;
+  double best_d = d2(ta);
+  for (int i = 1; i <= n; ++i) {
+    const double d = d2(i == n ? tb : ta + i * h);
+    if (d < best_d) best_d = d, best = i;
+  }
+  // Golden-section search around the best sample.
+  double lo = std::max(ta, ta + (best - 1) * h), hi = std::min(tb, ta + (best + 1) * h);
+  const double g = 0.5 * (std::sqrt(5.0) - 1);
+  double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
+  double f1 = d2(x1), f2 = d2(x2);
+  for (int i = 0; i < 80 && hi - lo > 1e-15 * (t1_ - t0_); ++i) {
+    if (f1 < f2) {
+      hi = x2, x2 = x1, f2 = f1, x1 = hi - g * (hi - lo), f1 = d2(x1);
+    } else {
+      lo = x1, x1 = x2, f1 = f2, x2 = lo + g * (hi - lo), f2 = d2(x2);
+    }
+  }
+  double t = f1 < f2 ? x1 : x2;
+  const double ft = std::min(f1, f2);
+  if (best_d < ft) t = best == n ? tb : ta + best * h;
+  return std::clamp(t, ta, tb);
+}
+
+std::vector<double> EdgeCurve::plane_crossings(const Point3& normal, double offset, double ta,
+                                               double tb) const {
+  std::vector<double> out;
+  if (!(tb >= ta)) return out;
+  const int n = samples_over(ta, tb);
+  const double h = (tb - ta) / n;
+  auto g = [&](double t) { return dot(normal, point(t)) - offset; };
+  double prev_t = ta, prev = g(ta);
+  if (prev == 0) out.push_back(ta);
+  for (int i = 1; i <= n; ++i) {
+    const double t = i == n ? tb : ta + i * h;
+    const double cur = g(t);
+    if (cur == 0) {
+      out.push_back(t);
+    } else if (prev != 0 && (prev < 0) != (cur < 0)) {
+      // Illinois regula falsi, bisection fallback.
+      double lo = prev_t, hi = t, flo = prev, fhi = cur;
+      int side = 0;
+      double x = 0.5 * (lo + hi);
+      for (int it = 0; it < 100 && hi - lo > 1e-15 * (t1_ - t0_); ++it) {
+        x = (lo * fhi - hi * flo) / (fhi - flo);
+        if (!(x > lo && x < hi)) x = 0.5 * (lo + hi);
+        const double fx = g(x);
+        if (fx == 0) break;
+        if ((fx < 0) == (flo < 0)) {
+          lo = x, flo = fx;
+          if (side == -1) fhi *= 0.5;
+          side = -1;
+        } else {
+          hi = x, fhi = fx;
+          if (side == 1) flo *= 0.5;
+          side = 1;
+        }
+        x = std::fabs(flo) < std::fabs(fhi) ? lo : hi;
+      }
+      out.push_back(x);
+    }
+    prev_t = t, prev = cur;
+  }
+  return out;
+}
+
+}  // namespace rdmesh::cad

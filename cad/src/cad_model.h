@@ -1,0 +1,100 @@
+// Internal to cad/: the OpenCASCADE data behind a CadOracle.
+#pragma once
+
+#include <BRepTopAdaptor_FClass2d.hxx>
+#include <Geom_Curve.hxx>
+#include <Geom_Surface.hxx>
+#include <Standard_Failure.hxx>
+#include <TopoDS_Face.hxx>
+#include <TopoDS_Shape.hxx>
+#include <TopoDS_Solid.hxx>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "rdmesh/cad_oracle.h"
+#include "rdmesh/errors.h"
+
+namespace rdmesh::cad {
+
+/// A shape as read from a file, with the names the file gives its solids.
+struct ReadShape {
+  TopoDS_Shape shape;
+  std::vector<std::pair<TopoDS_Shape, std::string>> solid_names;
+  std::vector<std::string> log;
+};
+
+/// Reads `path` by extension (cad_read.cpp). Throws InputError.
+ReadShape read_shape(const std::string& path, const CadOptions& options);
+
+/// One edge as an rdmesh Curve (cad_curve.cpp): the edge's 3D curve on
+/// [t0, t1] plus a linear blend of the end corrections q0 - c(t0), q1 - c(t1),
+/// so that point(t0) == q0 and point(t1) == q1 exactly.
+class EdgeCurve final : public Curve {
+ public:
+  EdgeCurve(Handle(Geom_Curve) curve, double t0, double t1, Point3 q0, Point3 q1, int samples);
+  Point3 point(double t) const override;
+  double length(double ta, double tb) const override;
+  double parameter_at_length(double ta, double s) const override;
+  double closest(const Point3& p, double ta, double tb) const override;
+  std::vector<double> plane_crossings(const Point3& normal, double offset, double ta,
+                                      double tb) const override;
+
+ private:
+  Point3 derivative(double t) const;
+  double speed_integral(double u, double v) const;  // Gauss-Legendre on one cell
+  double arc(double t) const;                       // length from t0 to t
+  int samples_over(double ta, double tb) const;
+  Handle(Geom_Curve) curve_;
+  double t0_, t1_;
+  Point3 d0_, d1_;
+  int samples_;
+  double cell_;
+  std::vector<double> cumulative_;  // arc(t0 + k * cell_)
+};
+
+struct SolidPiece {
+  TopoDS_Solid solid;
+  SubdomainId id;
+  Box3 box;
+};
+
+struct FacePatch {
+  TopoDS_Face face;
+  Handle(Geom_Surface) surface;  // with the face's location applied
+  double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
+  Box3 box;
+  std::unique_ptr<BRepTopAdaptor_FClass2d> classifier;
+};
+
+}  // namespace rdmesh::cad
+
+namespace rdmesh {
+
+struct CadOracle::Model {
+  TopoDS_Shape shape;  // the conformal compound of the solid pieces
+  int input_solids = 0;
+  std::vector<cad::SolidPiece> pieces;
+  std::vector<SubdomainInfo> subdomains;
+  std::vector<cad::FacePatch> faces;  // index = patch id - 1
+  std::vector<PatchInfo> patches;
+  std::vector<std::vector<Point3>> seeds;  // index = patch id - 1
+  std::vector<CurveInfo> curve_infos;
+  std::vector<std::unique_ptr<cad::EdgeCurve>> curves;
+  std::vector<CornerInfo> corners;
+  Box3 box;
+  double tolerance = 0;
+  std::vector<std::string> log;
+};
+
+namespace cad {
+/// Builds the oracle data from a read shape (cad_build.cpp). Throws InputError.
+std::unique_ptr<CadOracle::Model> build_model(ReadShape read, const std::string& source);
+/// Picks points inside each face from a coarse tessellation (cad_seeds.cpp).
+void compute_seeds(CadOracle::Model& model);
+/// "STANDARD_FAILURE_TYPE: message" of an OpenCASCADE exception.
+std::string describe(const Standard_Failure& e);
+}  // namespace cad
+
+}  // namespace rdmesh

@@ -1,0 +1,216 @@
+// CadOracle queries. OpenCASCADE's intersectors and classifiers keep state, so
+// each thread lazily builds its own per face / per solid and keeps them in a
+// small per-thread cache keyed by the oracle's serial number.
+#include <BRepBuilderAPI_MakeVertex.hxx>
+#include <BRepClass3d_SolidClassifier.hxx>
+#include <BRepExtrema_DistShapeShape.hxx>
+#include <BRepGProp.hxx>
+#include <GProp_GProps.hxx>
+#include <GeomAPI_ProjectPointOnSurf.hxx>
+#include <IntCurvesFace_Intersector.hxx>
+#include <array>
+#include <atomic>
+#include <cmath>
+#include <gp_Lin.hxx>
+#include <gp_Pnt2d.hxx>
+
+#include "cad_model.h"
+
+namespace rdmesh {
+namespace {
+
+using cad::describe;
+
+gp_Pnt to_gp(const Point3& p) { return {p.x, p.y, p.z}; }
+Point3 to_point(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
+
+struct ThreadCache {
+  std::uint64_t serial = 0;
+  std::vector<std::unique_ptr<IntCurvesFace_Intersector>> faces;
+  std::vector<std::unique_ptr<BRepClass3d_SolidClassifier>> solids;
+};
+
+ThreadCache& cache_for(std::uint64_t serial, std::size_t faces, std::size_t solids) {
+  thread_local std::array<ThreadCache, 4> caches;
+  thread_local std::size_t next = 0;
+  for (ThreadCache& c : caches) {
+    if (c.serial == serial) return c;
+  }
+  ThreadCache& c = caches[next];
+  next = (next + 1) % caches.size();
+  c.serial = serial;
+  c.faces.clear();
+  c.faces.resize(faces);
+  c.solids.clear();
+  c.solids.resize(solids);
+  return c;
+}
+
+std::atomic<std::uint64_t> next_serial{1};
+
+// Does segment [a, a + d] (t in [0, 1]) meet the box?
+bool segment_meets_box(const Point3& a, const Point3& d, const Box3& box) {
+  double t0 = 0, t1 = 1;
+  const double o[3] = {a.x, a.y, a.z}, v[3] = {d.x, d.y, d.z};
+  const double lo[3] = {box.lo.x, box.lo.y, box.lo.z}, hi[3] = {box.hi.x, box.hi.y, box.hi.z};
+  for (int k = 0; k < 3; ++k) {
+    if (v[k] == 0) {
+      if (o[k] < lo[k] || o[k] > hi[k]) return false;
+      continue;
+    }
+    double ta = (lo[k] - o[k]) / v[k], tb = (hi[k] - o[k]) / v[k];
+    if (ta > tb) std::swap(ta, tb);
+    t0 = std::max(t0, ta);
+    t1 = std::min(t1, tb);
+    if (t0 > t1) return false;
+  }
+  return true;
+}
+
+[[noreturn]] void rethrow_occt(const Standard_Failure& e, const char* query) {
+  throw OracleError(std::string("OpenCASCADE failed in ") + query + ": " + describe(e));
+}
+
+}  // namespace
+
+CadOracle::CadOracle(std::unique_ptr<Model> model)
+    : model_(std::move(model)), serial_(next_serial.fetch_add(1)) {}
+
+CadOracle::~CadOracle() = default;
+
+Box3 CadOracle::bounding_box() const { return model_->box; }
+std::vector<SubdomainInfo> CadOracle::subdomains() const { return model_->subdomains; }
+std::vector<PatchInfo> CadOracle::patches() const { return model_->patches; }
+double CadOracle::tolerance() const { return model_->tolerance; }
+std::vector<CornerInfo> CadOracle::corners() const { return model_->corners; }
+std::vector<CurveInfo> CadOracle::curves() const { return model_->curve_infos; }
+int CadOracle::input_solids() const { return model_->input_solids; }
+const std::vector<std::string>& CadOracle::log() const { return model_->log; }
+
+const Curve& CadOracle::curve(CurveId id) const {
+  if (id.value < 1 || id.value > static_cast<int>(model_->curves.size())) {
+    throw OracleError("CAD oracle: no curve " + std::to_string(id.value));
+  }
+  return *model_->curves[id.value - 1];
+}
+
+std::vector<Point3> CadOracle::initial_points(PatchId patch) const {
+  if (patch.value < 1 || patch.value > static_cast<int>(model_->seeds.size())) return {};
+  return model_->seeds[patch.value - 1];
+}
+
+SubdomainId CadOracle::locate(const Point3& p) const {
+  const Model& m = *model_;
+  if (!m.box.contains(p)) return kOutside;
+  try {
+    ThreadCache& cache = cache_for(serial_, m.faces.size(), m.pieces.size());
+    for (std::size_t i = 0; i < m.pieces.size(); ++i) {
+      if (!m.pieces[i].box.contains(p)) continue;
+      std::unique_ptr<BRepClass3d_SolidClassifier>& c = cache.solids[i];
+      if (!c) c = std::make_unique<BRepClass3d_SolidClassifier>(m.pieces[i].solid);
+      c->Perform(to_gp(p), 1e-6 * m.tolerance);
+      const TopAbs_State s = c->State();
+      if (s == TopAbs_IN || s == TopAbs_ON) return m.pieces[i].id;
+    }
+  } catch (const Standard_Failure& e) {
+    rethrow_occt(e, "locate");
+  }
+  return kOutside;
+}
+
+std::optional<SurfaceHit> CadOracle::intersect(const Point3& a, const Point3& b) const {
+  const Model& m = *model_;
+  const Point3 d = b - a;
+  const double len = norm(d);
+  if (!(len > 0)) return std::nullopt;
+  try {
+    ThreadCache& cache = cache_for(serial_, m.faces.size(), m.pieces.size());
+    const gp_Lin line(to_gp(a), gp_Dir(d.x, d.y, d.z));
+    double best = len + 1;
+    std::optional<SurfaceHit> hit;
+    for (std::size_t i = 0; i < m.faces.size(); ++i) {
+      if (!segment_meets_box(a, d, m.faces[i].box)) continue;
+      std::unique_ptr<IntCurvesFace_Intersector>& x = cache.faces[i];
+      if (!x) x = std::make_unique<IntCurvesFace_Intersector>(m.faces[i].face, 0.1 * m.tolerance);
+      x->Perform(line, 0.0, len);
+      if (!x->IsDone()) continue;
+      for (int k = 1; k <= x->NbPnt(); ++k) {
+        const double w = x->WParameter(k);
+        if (w < 0 || w > len || w >= best || x->Transition(k) == IntCurveSurface_Tangent) continue;
+        best = w;
+        hit = SurfaceHit{to_point(x->Pnt(k)), m.patches[i].id};
+      }
+    }
+    if (hit) return hit;
+  } catch (const Standard_Failure& e) {
+    rethrow_occt(e, "intersect");
+  }
+  // No transversal crossing found (a grazing segment, an edge): bracket the label change.
+  const SubdomainId la = locate(a), lb = locate(b);
+  if (la == lb) return std::nullopt;
+  double lo = 0, hi = 1;
+  SubdomainId lhi = lb;
+  while ((hi - lo) * len > m.tolerance) {
+    const double mid = 0.5 * (lo + hi);
+    const SubdomainId l = locate(a + mid * d);
+    if (l == la) {
+      lo = mid;
+    } else {
+      hi = mid, lhi = l;
+    }
+  }
+  const Point3 x = a + (0.5 * (lo + hi)) * d;
+  const SubdomainId s0 = std::min(la, lhi), s1 = std::max(la, lhi);
+  std::optional<PatchId> fallback;
+  for (std::size_t i = 0; i < m.patches.size(); ++i) {
+    const PatchInfo& p = m.patches[i];
+    if (p.side_a != s0 || p.side_b != s1) continue;
+    if (m.faces[i].box.contains(x)) return SurfaceHit{x, p.id};
+    if (!fallback) fallback = p.id;
+  }
+  if (!fallback) return std::nullopt;
+  return SurfaceHit{x, *fallback};
+}
+
+std::optional<Point3> CadOracle::project(const Point3& p, PatchId patch) const {
+  const Model& m = *model_;
+  if (patch.value < 1 || patch.value > static_cast<int>(m.faces.size())) return std::nullopt;
+  const cad::FacePatch& f = m.faces[patch.value - 1];
+  try {
+    GeomAPI_ProjectPointOnSurf proj(to_gp(p), f.surface, f.u0, f.u1, f.v0, f.v1);
+    if (proj.NbPoints() > 0) {
+      double u, v;
+      proj.LowerDistanceParameters(u, v);
+      const TopAbs_State s = f.classifier->Perform(gp_Pnt2d(u, v));
+      if (s == TopAbs_IN || s == TopAbs_ON) return to_point(proj.NearestPoint());
+    }
+    // The foot point is outside the trimmed face: the closest point is on its boundary.
+    BRepExtrema_DistShapeShape dist(BRepBuilderAPI_MakeVertex(to_gp(p)).Vertex(), f.face);
+    if (dist.IsDone() && dist.NbSolution() > 0) return to_point(dist.PointOnShape2(1));
+  } catch (const Standard_Failure&) {
+    return std::nullopt;  // "does not converge"
+  }
+  return std::nullopt;
+}
+
+double CadOracle::exact_volume(SubdomainId id) const {
+  double v = 0;
+  try {
+    for (const cad::SolidPiece& piece : model_->pieces) {
+      if (id != kOutside && piece.id != id) continue;
+      GProp_GProps props;
+      BRepGProp::VolumeProperties(piece.solid, props);
+      v += props.Mass();
+    }
+  } catch (const Standard_Failure& e) {
+    rethrow_occt(e, "exact_volume");
+  }
+  return v;
+}
+
+std::unique_ptr<CadOracle> load_cad_file(const std::string& path, const CadOptions& options) {
+  cad::ReadShape read = cad::read_shape(path, options);
+  return std::make_unique<CadOracle>(cad::build_model(std::move(read), path));
+}
+
+}  // namespace rdmesh

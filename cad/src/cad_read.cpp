@@ -1,0 +1,195 @@
+// Reading STEP / BREP / IGES files into one shape, with solid names, sewing of
+// solid-less files, optional healing and the validity check.
+#include <BRepBuilderAPI_MakeSolid.hxx>
+#include <BRepBuilderAPI_Sewing.hxx>
+#include <BRepCheck_Analyzer.hxx>
+#include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
+#include <IFSelect_ReturnStatus.hxx>
+#include <IGESControl_Reader.hxx>
+#include <Message.hxx>
+#include <Message_Messenger.hxx>
+#include <STEPControl_Reader.hxx>
+#include <ShapeFix_Shape.hxx>
+#include <ShapeFix_Solid.hxx>
+#include <StepRepr_RepresentationItem.hxx>
+#include <TCollection_HAsciiString.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
+#include <XSControl_TransferReader.hxx>
+#include <XSControl_WorkSession.hxx>
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "cad_model.h"
+
+namespace rdmesh::cad {
+namespace {
+
+std::string lower_extension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
+
+int count(const TopoDS_Shape& s, TopAbs_ShapeEnum type) {
+  int n = 0;
+  for (TopExp_Explorer ex(s, type); ex.More(); ex.Next()) ++n;
+  return n;
+}
+
+std::string counts(const TopoDS_Shape& s) {
+  return std::to_string(count(s, TopAbs_SOLID)) + " solids, " +
+         std::to_string(count(s, TopAbs_FACE)) + " faces, " +
+         std::to_string(count(s, TopAbs_EDGE)) + " edges";
+}
+
+ReadShape read_step(const std::string& path) {
+  STEPControl_Reader reader;
+  if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) {
+    throw InputError(path, "cannot parse the STEP file (corrupt or truncated?)");
+  }
+  if (reader.TransferRoots() == 0) throw InputError(path, "the STEP file holds no shape");
+  ReadShape r;
+  r.shape = reader.OneShape();
+  r.log.push_back("STEP read, lengths in millimetres");
+  const Handle(XSControl_TransferReader) tr = reader.WS()->TransferReader();
+  for (TopExp_Explorer ex(r.shape, TopAbs_SOLID); ex.More(); ex.Next()) {
+    const Handle(Standard_Transient) entity = tr->EntityFromShapeResult(ex.Current(), 1);
+    const Handle(StepRepr_RepresentationItem) item =
+        Handle(StepRepr_RepresentationItem)::DownCast(entity);
+    if (!item.IsNull() && !item->Name().IsNull() && item->Name()->Length() > 0) {
+      r.solid_names.emplace_back(ex.Current(), item->Name()->ToCString());
+    }
+  }
+  return r;
+}
+
+ReadShape read_iges(const std::string& path) {
+  IGESControl_Reader reader;
+  if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) {
+    throw InputError(path, "cannot parse the IGES file (corrupt or truncated?)");
+  }
+  if (reader.TransferRoots() == 0) throw InputError(path, "the IGES file holds no shape");
+  ReadShape r;
+  r.shape = reader.OneShape();
+  r.log.push_back("IGES read, lengths in millimetres");
+  return r;
+}
+
+ReadShape read_brep(const std::string& path) {
+  ReadShape r;
+  BRep_Builder builder;
+  if (!BRepTools::Read(r.shape, path.c_str(), builder) || r.shape.IsNull()) {
+    throw InputError(path, "cannot parse the BREP file (corrupt or truncated?)");
+  }
+  r.log.push_back("BREP read (no unit: lengths as stored)");
+  return r;
+}
+
+// Sews the faces of a solid-less shape; each closed shell becomes a solid.
+void make_solids(ReadShape& r, const std::string& path) {
+  if (count(r.shape, TopAbs_FACE) == 0)
+    throw InputError(path, "the file holds no solid and no face");
+  BRepBuilderAPI_Sewing sewing;
+  sewing.Add(r.shape);
+  sewing.Perform();
+  TopoDS_Compound solids;
+  BRep_Builder builder;
+  builder.MakeCompound(solids);
+  int closed = 0, open = 0;
+  for (TopExp_Explorer ex(sewing.SewedShape(), TopAbs_SHELL); ex.More(); ex.Next()) {
+    const TopoDS_Shell& shell = TopoDS::Shell(ex.Current());
+    if (!BRep_Tool::IsClosed(shell)) {
+      ++open;
+      continue;
+    }
+    ShapeFix_Solid fix;
+    builder.Add(solids, fix.SolidFromShell(shell));
+    ++closed;
+  }
+  if (closed == 0) {
+    throw InputError(path, "the file holds no solid: its " +
+                               std::to_string(count(r.shape, TopAbs_FACE)) + " faces form " +
+                               std::to_string(open) +
+                               " open shell(s); rdmesh meshes closed volumes only");
+  }
+  r.log.push_back("no solid in the file: sewed its faces into " + std::to_string(closed) +
+                  " closed shell(s)" +
+                  (open ? ", ignored " + std::to_string(open) + " open shell(s)" : ""));
+  r.shape = solids;
+}
+
+void heal(ReadShape& r, const std::string& path) {
+  const std::string before = counts(r.shape);
+  ShapeFix_Shape fix(r.shape);
+  fix.Perform();
+  if (fix.Status(ShapeExtend_FAIL)) throw InputError(path, "shape healing (ShapeFix_Shape) failed");
+  if (!fix.Status(ShapeExtend_DONE)) {
+    r.log.push_back("healing: nothing to fix (" + before + ")");
+    return;
+  }
+  // Solids may have been rebuilt: keep the names of those that survived.
+  r.shape = fix.Shape();
+  r.log.push_back("healing: fixed the shape; before " + before + ", after " + counts(r.shape));
+}
+
+}  // namespace
+
+ReadShape read_shape(const std::string& path, const CadOptions& options) {
+  // OpenCASCADE's translators print to stdout; our errors say what went wrong.
+  static const bool silenced = [] {
+    Message::DefaultMessenger()->ChangePrinters().Clear();
+    return true;
+  }();
+  (void)silenced;
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path, "no such file");
+  if (!std::ifstream(path).good()) throw InputError(path, "cannot open the file");
+  if (std::filesystem::file_size(path, ec) == 0) throw InputError(path, "the file is empty");
+  const std::string ext = lower_extension(path);
+  ReadShape r;
+  try {
+    if (ext == ".step" || ext == ".stp") {
+      r = read_step(path);
+    } else if (ext == ".iges" || ext == ".igs") {
+      r = read_iges(path);
+    } else if (ext == ".brep") {
+      r = read_brep(path);
+    } else {
+      throw InputError(path, "not a CAD file extension: '" + ext + "'");
+    }
+    if (r.shape.IsNull()) throw InputError(path, "the file holds no shape");
+    if (count(r.shape, TopAbs_SOLID) == 0) make_solids(r, path);
+    if (options.heal) heal(r, path);
+    if (options.check_validity) {
+      BRepCheck_Analyzer check(r.shape);
+      if (!check.IsValid()) {
+        throw InputError(path, std::string("invalid B-rep (BRepCheck_Analyzer)") +
+                                   (options.heal ? " even after healing" : "; try --heal"));
+      }
+    }
+  } catch (const Standard_Failure& e) {
+    throw InputError(path, "OpenCASCADE failed to read the model: " + describe(e));
+  }
+  return r;
+}
+
+std::string describe(const Standard_Failure& e) {
+  const char* message = e.GetMessageString();
+  return std::string(e.DynamicType()->Name()) +
+         (message && *message ? std::string(": ") + message : "");
+}
+
+}  // namespace rdmesh::cad
+
+namespace rdmesh {
+bool is_cad_file(const std::string& path) {
+  const std::string ext = cad::lower_extension(path);
+  return ext == ".step" || ext == ".stp" || ext == ".brep" || ext == ".iges" || ext == ".igs";
+}
+}  // namespace rdmesh
