@@ -15,12 +15,13 @@
 #include "rdmesh/cad_oracle.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/mesh_writers.h"
+#include "rdmesh/triangle_mesh_oracle.h"
 
 namespace rdmesh::cli {
 namespace fs = std::filesystem;
 
 void add_options(CLI::App& app, Options& opt) {
-  app.add_option("input", opt.input, "Domain: .json implicit domain file, or a .step/.stp/.brep/.iges/.igs CAD model")->required();
+  app.add_option("input", opt.input, "Domain: .json implicit domain file, a .step/.stp/.brep/.iges/.igs CAD model, or a closed .off/.stl/.obj/.ply triangle mesh")->required();
   app.add_option("-o,--output", opt.output,
                  "Output mesh: .mesh (Medit), .msh (Gmsh 4.1) or .vtu (VTK); default INPUT-stem.msh");
   app.add_option("--size", opt.size, "Target size h: edge, facet and cell size = h, facet distance h/10");
@@ -50,13 +51,21 @@ void add_options(CLI::App& app, Options& opt) {
   app.add_flag("-q,--quiet", opt.quiet, "No progress and no summary");
   app.add_flag("--heal", opt.heal,
                "CAD input: run OpenCASCADE shape healing first and report what it changed");
+  app.add_option("--feature-angle", opt.feature_angle,
+                 "Triangle-mesh input: an edge is a sharp curve when its two triangles' normals "
+                 "turn by more than this, degrees (default 60)")
+      ->check(CLI::Range(0.0, 180.0));
 }
 
 LoadedInput load_input(const std::string& path) { return load_input(path, false); }
 
-LoadedInput load_input(const Options& opt) { return load_input(opt.input, opt.heal); }
+LoadedInput load_input(const Options& opt) {
+  return load_input(opt.input, opt.heal, opt.feature_angle);
+}
 
-LoadedInput load_input(const std::string& path, bool heal) {
+LoadedInput load_input(const std::string& path, bool heal) { return load_input(path, heal, 60); }
+
+LoadedInput load_input(const std::string& path, bool heal, double feature_angle) {
   if (is_cad_file(path)) {
     CadOptions options;
     options.heal = heal;
@@ -73,12 +82,12 @@ LoadedInput load_input(const std::string& path, bool heal) {
     return {std::move(d.oracle), std::move(d.hints)};
   }
   if (ext == ".off" || ext == ".stl" || ext == ".obj" || ext == ".ply") {
-    throw InputError(path, "input format '" + ext +
-                               "' is not supported by this version of rdmesh (only .json "
-                               "implicit domains and .step/.stp/.brep/.iges/.igs CAD models are)");
+    TriangleMeshOptions options;
+    options.feature_angle_degrees = feature_angle;
+    return {TriangleMeshOracle::from_file(path, options), {}};
   }
   throw InputError(path, "unknown input extension '" + ext +
-                               "' (expected .json, .step, .stp, .brep, .iges or .igs)");
+                               "' (expected .json, .step, .stp, .brep, .iges, .igs, .off, .stl, .obj or .ply)");
 }
 
 void check_writable(const std::string& path) {

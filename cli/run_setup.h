@@ -27,6 +27,7 @@ struct Options {
   std::string report;  ///< JSON report path, empty = none
   bool quiet = false;
   bool heal = false;  ///< --heal: OpenCASCADE shape healing of CAD input
+  double feature_angle = 60;  ///< --feature-angle DEG: sharp-edge threshold of triangle-mesh input
 };
 
 void add_options(CLI::App& app, Options& opt);
@@ -41,7 +42,9 @@ struct LoadedInput {
 LoadedInput load_input(const std::string& path);
 /// Same, healing CAD input first when `heal` (what healing changed goes to stderr).
 LoadedInput load_input(const std::string& path, bool heal);
-/// load_input(opt.input, opt.heal).
+/// Same, with the sharp-edge threshold (degrees) of triangle-mesh input (.off/.stl/.obj/.ply).
+LoadedInput load_input(const std::string& path, bool heal, double feature_angle);
+/// load_input(opt.input, opt.heal, opt.feature_angle).
 LoadedInput load_input(const Options& opt);
 
 /// Throws OutputError early (before meshing) when `path` cannot be written.
