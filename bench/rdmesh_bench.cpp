@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "cgal_anchor.h"
+#include "polyhedral_anchor.h"
 #include "rdmesh_side.h"
 #include "shapes.h"
 
@@ -43,6 +44,16 @@ const std::vector<Case>& all_cases() {
       {"sphere-0.025", "sphere", 0.025, false},
       {"torus-0.05", "torus", 0.05, true},
       {"torus-0.025", "torus", 0.025, false},
+      // Triangle meshes (h as a fraction of the box diagonal), Mesh_3 with features at 60 degrees.
+      {"fandisk-0.03", "mesh:cgal_fandisk.off", 0.03, true},
+      {"anchor-0.03", "mesh:cgal_anchor.off", 0.03, false},
+      {"joint-0.03", "mesh:cgal_joint.off", 0.03, false},
+      {"part-0.03", "mesh:cgal_part.off", 0.03, false},
+      {"pinion-0.025", "mesh:cgal_pinion.off", 0.025, false},
+      {"spool-0.03", "mesh:cgal_spool.off", 0.03, false},
+      {"tripod-0.03", "mesh:cgal_tripod.off", 0.03, false},
+      {"part1-0.03", "mesh:netgen_part1.stl", 0.03, false},
+      {"hinge-0.03", "mesh:netgen_hinge.stl", 0.03, false},
   };
   return cases;
 }
@@ -74,7 +85,8 @@ Wire run_side_inline(Side side, const Case& c) {
   Wire w;
   try {
     if (side == Side::kRdmesh) {
-      const RdmeshResult r = run_rdmesh(c.shape, c.h, g_optimize);
+      const RdmeshResult r = is_polyhedral_shape(c.shape) ? run_rdmesh_polyhedral(c.shape, c.h)
+                                                          : run_rdmesh(c.shape, c.h, g_optimize);
       w.tets = r.tets;
       w.vertices = r.vertices;
       w.seconds = r.seconds;
@@ -90,7 +102,10 @@ Wire run_side_inline(Side side, const Case& c) {
       w.refine_seconds = r.refine_seconds;
       w.exude_seconds = r.optimize_seconds;
     } else {
-      const AnchorResult r = run_cgal_anchor(c.shape, c.h, g_cgal_relative_error, g_optimize);
+      const AnchorResult r =
+          is_polyhedral_shape(c.shape)
+              ? run_cgal_polyhedral(c.shape, c.h)
+              : run_cgal_anchor(c.shape, c.h, g_cgal_relative_error, g_optimize);
       w.tets = r.tets;
       w.vertices = r.vertices;
       w.seconds = r.seconds;
@@ -430,7 +445,7 @@ int main(int argc, char** argv) {
     if (row.r && row.r->peak_rss_kb >= 0) rm = fmt("%.0f", row.r->peak_rss_kb / 1024.0);
     if (row.cg && row.cg->peak_rss_kb >= 0) cm = fmt("%.0f", row.cg->peak_rss_kb / 1024.0);
     std::printf("| %s | %s / %s | %s / %s [%.4f] | %s | %s | %s / %s |\n", row.c.name.c_str(),
-                rv.c_str(), cv.c_str(), rvol.c_str(), cvol.c_str(), shape->exact_volume,
+                rv.c_str(), cv.c_str(), rvol.c_str(), cvol.c_str(), shape ? shape->exact_volume : 0.0,
                 setup.c_str(), guard.c_str(), rm.c_str(), cm.c_str());
   }
   for (const Row& row : rows) {
