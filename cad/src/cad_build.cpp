@@ -101,10 +101,13 @@ void collect_faces(CadOracle::Model& m, TopTools_IndexedMapOfShape& patch_faces)
   for (int i = 1; i <= ordered.Extent(); ++i) {
     const TopoDS_Face face = TopoDS::Face(ordered(i));
     std::vector<int> labels;
+    int first_owner = -1;  // the piece whose orientation the map kept
     for (const SolidPiece& p : m.pieces) {
       // Count each side: a face used twice by one solid (a crack) separates nothing.
       for (TopExp_Explorer ex(p.solid, TopAbs_FACE); ex.More(); ex.Next()) {
-        if (ex.Current().IsSame(face)) labels.push_back(p.id.value);
+        if (!ex.Current().IsSame(face)) continue;
+        labels.push_back(p.id.value);
+        if (first_owner < 0) first_owner = p.id.value;
       }
     }
     if (labels.size() == 1) labels.insert(labels.begin(), 0);
@@ -117,6 +120,8 @@ void collect_faces(CadOracle::Model& m, TopTools_IndexedMapOfShape& patch_faces)
     BRepTools::UVBounds(face, fp.u0, fp.u1, fp.v0, fp.v1);
     fp.box = box_of(face, 0);
     fp.classifier = std::make_unique<BRepTopAdaptor_FClass2d>(face, BRep_Tool::Tolerance(face));
+    fp.outward_of = SubdomainId(first_owner);
+    fp.inward_of = SubdomainId(labels[0] == first_owner ? labels[1] : labels[0]);
     const int id = static_cast<int>(m.faces.size()) + 1;
     m.patches.push_back({PatchId(id), "face_" + std::to_string(id), SubdomainId(labels[0]),
                          SubdomainId(labels[1])});

@@ -66,6 +66,9 @@ struct FacePatch {
   double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
   Box3 box;
   std::unique_ptr<BRepTopAdaptor_FClass2d> classifier;
+  /// The face's normal (surface normal, flipped for a reversed face) points out
+  /// of subdomain `outward_of` into subdomain `inward_of` (either may be 0).
+  SubdomainId outward_of, inward_of;
 };
 
 }  // namespace rdmesh::cad

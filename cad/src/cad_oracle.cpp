@@ -2,12 +2,12 @@
 // each thread lazily builds its own per face / per solid and keeps them in a
 // small per-thread cache keyed by the oracle's serial number.
 #include <BRepBuilderAPI_MakeVertex.hxx>
-#include <BRepClass3d_SolidClassifier.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
 #include <BRepGProp.hxx>
 #include <GProp_GProps.hxx>
 #include <GeomAPI_ProjectPointOnSurf.hxx>
 #include <IntCurvesFace_Intersector.hxx>
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <cmath>
@@ -27,10 +27,10 @@ Point3 to_point(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
 struct ThreadCache {
   std::uint64_t serial = 0;
   std::vector<std::unique_ptr<IntCurvesFace_Intersector>> faces;
-  std::vector<std::unique_ptr<BRepClass3d_SolidClassifier>> solids;
+  std::vector<std::pair<double, int>> candidates;  // (box entry, face index), reused
 };
 
-ThreadCache& cache_for(std::uint64_t serial, std::size_t faces, std::size_t solids) {
+ThreadCache& cache_for(std::uint64_t serial, std::size_t faces) {
   thread_local std::array<ThreadCache, 4> caches;
   thread_local std::size_t next = 0;
   for (ThreadCache& c : caches) {
@@ -41,31 +41,34 @@ ThreadCache& cache_for(std::uint64_t serial, std::size_t faces, std::size_t soli
   c.serial = serial;
   c.faces.clear();
   c.faces.resize(faces);
-  c.solids.clear();
-  c.solids.resize(solids);
   return c;
 }
 
 std::atomic<std::uint64_t> next_serial{1};
 
-// Does segment [a, a + d] (t in [0, 1]) meet the box?
-bool segment_meets_box(const Point3& a, const Point3& d, const Box3& box) {
+// Entry parameter of ray a + t d (t in [0, 1]) into the box, or -1 when it misses.
+double box_entry(const Point3& a, const Point3& d, const Box3& box) {
   double t0 = 0, t1 = 1;
   const double o[3] = {a.x, a.y, a.z}, v[3] = {d.x, d.y, d.z};
   const double lo[3] = {box.lo.x, box.lo.y, box.lo.z}, hi[3] = {box.hi.x, box.hi.y, box.hi.z};
   for (int k = 0; k < 3; ++k) {
     if (v[k] == 0) {
-      if (o[k] < lo[k] || o[k] > hi[k]) return false;
+      if (o[k] < lo[k] || o[k] > hi[k]) return -1;
       continue;
     }
     double ta = (lo[k] - o[k]) / v[k], tb = (hi[k] - o[k]) / v[k];
     if (ta > tb) std::swap(ta, tb);
     t0 = std::max(t0, ta);
     t1 = std::min(t1, tb);
-    if (t0 > t1) return false;
+    if (t0 > t1) return -1;
   }
-  return true;
+  return t0;
 }
+
+// Ray directions for locate(): generic (no axis or diagonal alignment).
+constexpr Point3 kRays[3] = {{0.8017837257372732, 0.5345224838248488, 0.2672612419124244},
+                             {-0.3162277660168379, 0.1825741858350554, 0.9309493362512627},
+                             {0.2357022603955158, -0.9428090415820634, 0.2357022603955158}};
 
 [[noreturn]] void rethrow_occt(const Standard_Failure& e, const char* query) {
   throw OracleError(std::string("OpenCASCADE failed in ") + query + ": " + describe(e));
@@ -99,23 +102,65 @@ std::vector<Point3> CadOracle::initial_points(PatchId patch) const {
   return model_->seeds[patch.value - 1];
 }
 
+std::optional<CadOracle::RayHit> CadOracle::first_hit(const Point3& a, const Point3& d) const {
+  const Model& m = *model_;
+  const double len = norm(d);
+  if (!(len > 0)) return std::nullopt;
+  ThreadCache& cache = cache_for(serial_, m.faces.size());
+  std::vector<std::pair<double, int>>& cand = cache.candidates;
+  cand.clear();
+  for (std::size_t i = 0; i < m.faces.size(); ++i) {
+    const double t = box_entry(a, d, m.faces[i].box);
+    if (t >= 0) cand.emplace_back(t, static_cast<int>(i));
+  }
+  std::sort(cand.begin(), cand.end());
+  const gp_Lin line(to_gp(a), gp_Dir(d.x, d.y, d.z));
+  std::optional<RayHit> best;
+  for (const auto& [entry, i] : cand) {
+    if (best && entry * len > best->distance) break;  // boxes sorted by entry
+    std::unique_ptr<IntCurvesFace_Intersector>& x = cache.faces[i];
+    if (!x) x = std::make_unique<IntCurvesFace_Intersector>(m.faces[i].face, 0.1 * m.tolerance);
+    x->Perform(line, 0.0, best ? best->distance : len);
+    if (!x->IsDone()) continue;
+    for (int k = 1; k <= x->NbPnt(); ++k) {
+      const double w = x->WParameter(k);
+      if (w < 0 || w > len || (best && w >= best->distance)) continue;
+      RayHit h;
+      h.distance = w;
+      h.face = i;
+      h.point = to_point(x->Pnt(k));
+      h.tangent = x->Transition(k) == IntCurveSurface_Tangent || x->State(k) == TopAbs_ON;
+      gp_Pnt p;
+      gp_Vec du, dv;
+      m.faces[i].surface->D1(x->UParameter(k), x->VParameter(k), p, du, dv);
+      gp_Vec n = du.Crossed(dv);
+      if (m.faces[i].face.Orientation() == TopAbs_REVERSED) n.Reverse();
+      const double nn = n.Magnitude();
+      h.cosine = nn > 0 ? (n.X() * d.x + n.Y() * d.y + n.Z() * d.z) / (nn * len) : 0.0;
+      best = h;
+    }
+  }
+  return best;
+}
+
 SubdomainId CadOracle::locate(const Point3& p) const {
   const Model& m = *model_;
   if (!m.box.contains(p)) return kOutside;
+  const double reach = 2 * m.box.diagonal();
   try {
-    ThreadCache& cache = cache_for(serial_, m.faces.size(), m.pieces.size());
-    for (std::size_t i = 0; i < m.pieces.size(); ++i) {
-      if (!m.pieces[i].box.contains(p)) continue;
-      std::unique_ptr<BRepClass3d_SolidClassifier>& c = cache.solids[i];
-      if (!c) c = std::make_unique<BRepClass3d_SolidClassifier>(m.pieces[i].solid);
-      c->Perform(to_gp(p), 1e-6 * m.tolerance);
-      const TopAbs_State s = c->State();
-      if (s == TopAbs_IN || s == TopAbs_ON) return m.pieces[i].id;
+    SubdomainId answer = kOutside;
+    for (const Point3& dir : kRays) {
+      const std::optional<RayHit> h = first_hit(p, reach * dir);
+      if (!h) return kOutside;  // the ray leaves the domain without crossing a face
+      const cad::FacePatch& f = m.faces[h->face];
+      // The ray leaves the side the normal points out of when it goes along the normal.
+      answer = h->cosine > 0 ? f.outward_of : f.inward_of;
+      if (!h->tangent && std::fabs(h->cosine) > 1e-3) return answer;
     }
+    return answer;  // every ray grazed: keep the last answer
   } catch (const Standard_Failure& e) {
     rethrow_occt(e, "locate");
   }
-  return kOutside;
 }
 
 std::optional<SurfaceHit> CadOracle::intersect(const Point3& a, const Point3& b) const {
@@ -124,24 +169,10 @@ std::optional<SurfaceHit> CadOracle::intersect(const Point3& a, const Point3& b)
   const double len = norm(d);
   if (!(len > 0)) return std::nullopt;
   try {
-    ThreadCache& cache = cache_for(serial_, m.faces.size(), m.pieces.size());
-    const gp_Lin line(to_gp(a), gp_Dir(d.x, d.y, d.z));
-    double best = len + 1;
-    std::optional<SurfaceHit> hit;
-    for (std::size_t i = 0; i < m.faces.size(); ++i) {
-      if (!segment_meets_box(a, d, m.faces[i].box)) continue;
-      std::unique_ptr<IntCurvesFace_Intersector>& x = cache.faces[i];
-      if (!x) x = std::make_unique<IntCurvesFace_Intersector>(m.faces[i].face, 0.1 * m.tolerance);
-      x->Perform(line, 0.0, len);
-      if (!x->IsDone()) continue;
-      for (int k = 1; k <= x->NbPnt(); ++k) {
-        const double w = x->WParameter(k);
-        if (w < 0 || w > len || w >= best || x->Transition(k) == IntCurveSurface_Tangent) continue;
-        best = w;
-        hit = SurfaceHit{to_point(x->Pnt(k)), m.patches[i].id};
-      }
+    const std::optional<RayHit> h = first_hit(a, d);
+    if (h && !(h->tangent && std::fabs(h->cosine) < 1e-6)) {
+      return SurfaceHit{h->point, m.patches[h->face].id};
     }
-    if (hit) return hit;
   } catch (const Standard_Failure& e) {
     rethrow_occt(e, "intersect");
   }

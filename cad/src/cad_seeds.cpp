@@ -26,16 +26,23 @@ std::vector<Point3> from_triangulation(const FacePatch& f) {
   TopLoc_Location loc;
   const Handle(Poly_Triangulation) tri = BRep_Tool::Triangulation(f.face, loc);
   if (tri.IsNull() || !tri->HasUVNodes() || tri->NbTriangles() == 0) return out;
+  // Centroids of up to kMaxSeeds spread triangles; three interior points per
+  // triangle when the face has fewer than three triangles.
+  constexpr int kMaxSeeds = 48;
   const int n = tri->NbTriangles();
-  const int picks = std::min(n, 4);
-  constexpr double kBary[3][3] = {
-      {4.0 / 6, 1.0 / 6, 1.0 / 6}, {1.0 / 6, 4.0 / 6, 1.0 / 6}, {1.0 / 6, 1.0 / 6, 4.0 / 6}};
+  const int picks = std::min(n, kMaxSeeds);
+  constexpr double kBary[4][3] = {{1.0 / 3, 1.0 / 3, 1.0 / 3},
+                                  {4.0 / 6, 1.0 / 6, 1.0 / 6},
+                                  {1.0 / 6, 4.0 / 6, 1.0 / 6},
+                                  {1.0 / 6, 1.0 / 6, 4.0 / 6}};
+  const int first = n >= 3 ? 0 : 1, last = n >= 3 ? 1 : 4;
   for (int k = 0; k < picks; ++k) {
     const int t = 1 + static_cast<int>((static_cast<long long>(k) * n) / picks);
     int a, b, c;
     tri->Triangle(t).Get(a, b, c);
     const gp_Pnt2d pa = tri->UVNode(a), pb = tri->UVNode(b), pc = tri->UVNode(c);
-    for (const auto& w : kBary) {
+    for (int j = first; j < last; ++j) {
+      const double* w = kBary[j];
       const double u = w[0] * pa.X() + w[1] * pb.X() + w[2] * pc.X();
       const double v = w[0] * pa.Y() + w[1] * pb.Y() + w[2] * pc.Y();
       if (inside(f, u, v)) out.push_back(evaluate(f, u, v));

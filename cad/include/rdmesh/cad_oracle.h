@@ -20,11 +20,14 @@
 // first appearance. Each curve is the edge's own 3D curve, shifted by a linear
 // blend (at most the vertex tolerance) so that it ends exactly at its corners.
 //
-// Queries. locate() classifies in the solids (BRepClass3d_SolidClassifier)
-// after bounding-box pruning; intersect() intersects the segment with the true
-// faces whose boxes it meets (IntCurvesFace_Intersector) and returns the hit
-// nearest to a; initial_points() evaluates the true surface at interior points
-// of a coarse BRepMesh tessellation (used only for seeding); project() is
+// Queries. intersect() intersects the segment with the true faces whose boxes
+// it meets (IntCurvesFace_Intersector), visiting the boxes in order of entry
+// along the segment, and returns the hit nearest to a. locate() casts a ray
+// from p with the same machinery and reads the label from the first face it
+// crosses and the face's orientation (normal out of one side), retrying along
+// another ray when the first crossing grazes or lies on a face boundary; so
+// locate() and intersect() agree by construction; initial_points() evaluates the true surface at
+// interior points of a coarse BRepMesh tessellation (used only for seeding); project() is
 // GeomAPI_ProjectPointOnSurf, with BRepExtrema when the foot point falls
 // outside the face. Queries are const and thread-safe: OpenCASCADE's stateful
 // intersectors and classifiers are kept in per-thread caches.
@@ -85,6 +88,16 @@ class CadOracle final : public DomainOracle {
   const std::vector<std::string>& log() const;
 
  private:
+  struct RayHit {
+    double distance = 0;  ///< along the ray
+    int face = 0;         ///< index of the patch's face
+    Point3 point;
+    double cosine = 0;     ///< between the face's outward normal and the ray
+    bool tangent = false;  ///< grazing, or on the face's boundary
+  };
+  /// The first crossing of segment [a, a + d] with a face (per-thread intersectors).
+  std::optional<RayHit> first_hit(const Point3& a, const Point3& d) const;
+
   std::unique_ptr<Model> model_;
   std::uint64_t serial_;  // identifies this oracle in the per-thread caches
 };
