@@ -30,7 +30,7 @@ int run(const rdmesh::cli::Options& opt) {
   cli::check_writable(opt.output);
   if (!opt.report.empty()) cli::check_writable(opt.report);
 
-  cli::LoadedInput input = cli::load_input(opt.input);
+  cli::LoadedInput input = cli::load_input(opt);
   const Criteria criteria = cli::resolve_criteria(opt, input);
   const double seconds_load =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -57,20 +57,13 @@ void add_options(CLI::App& app, Options& opt) {
       ->check(CLI::Range(0.0, 180.0));
 }
 
-LoadedInput load_input(const std::string& path) { return load_input(path, false); }
-
 LoadedInput load_input(const Options& opt) {
-  return load_input(opt.input, opt.heal, opt.feature_angle);
-}
-
-LoadedInput load_input(const std::string& path, bool heal) { return load_input(path, heal, 60); }
-
-LoadedInput load_input(const std::string& path, bool heal, double feature_angle) {
+  const std::string& path = opt.input;
   if (is_cad_file(path)) {
     CadOptions options;
-    options.heal = heal;
+    options.heal = opt.heal;
     std::unique_ptr<CadOracle> cad = load_cad_file(path, options);
-    if (heal) {
+    if (opt.heal) {
       for (const std::string& line : cad->log()) std::cerr << path << ": " << line << "\n";
     }
     return {std::move(cad), {}};
@@ -83,7 +76,7 @@ LoadedInput load_input(const std::string& path, bool heal, double feature_angle)
   }
   if (ext == ".off" || ext == ".stl" || ext == ".obj" || ext == ".ply") {
     TriangleMeshOptions options;
-    options.feature_angle_degrees = feature_angle;
+    options.feature_angle_degrees = opt.feature_angle;
     return {TriangleMeshOracle::from_file(path, options), {}};
   }
   throw InputError(path, "unknown input extension '" + ext +

@@ -38,13 +38,10 @@ struct LoadedInput {
   CriteriaHints hints;
 };
 
-/// Chooses the reader by extension; throws InputError naming the file.
-LoadedInput load_input(const std::string& path);
-/// Same, healing CAD input first when `heal` (what healing changed goes to stderr).
-LoadedInput load_input(const std::string& path, bool heal);
-/// Same, with the sharp-edge threshold (degrees) of triangle-mesh input (.off/.stl/.obj/.ply).
-LoadedInput load_input(const std::string& path, bool heal, double feature_angle);
-/// load_input(opt.input, opt.heal, opt.feature_angle).
+/// Reads opt.input, choosing the reader by extension: .json implicit domain,
+/// CAD model (healed first with opt.heal; what healing changed goes to stderr),
+/// triangle mesh (sharp edges above opt.feature_angle degrees). Throws
+/// InputError naming the file.
 LoadedInput load_input(const Options& opt);
 
 /// Throws OutputError early (before meshing) when `path` cannot be written.

@@ -1,0 +1,57 @@
+// Inputs other than implicit domains through the CLI: triangle meshes and CAD.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.h"
+
+namespace rdmesh::test {
+namespace {
+
+nlohmann::json read_json(const std::string& path) {
+  std::ifstream in(path);
+  return nlohmann::json::parse(in);
+}
+
+const std::string kFandisk = "'" + std::string(RDMESH_SOURCE_DIR) + "/../shared/data/mesh/cgal_fandisk.off'";
+
+TEST(CliInputs, TriangleMeshWithFeatureAngle) {
+  ScratchDir dir;
+  if (!std::filesystem::exists(std::string(RDMESH_SOURCE_DIR) + "/../shared/data/mesh/cgal_fandisk.off")) {
+    GTEST_SKIP() << "shared data not beside the checkout";
+  }
+  ASSERT_EQ(run_cli(kFandisk + " -o a.mesh -q --report a.json", dir.path()).exit_code, 0);
+  ASSERT_EQ(run_cli(kFandisk + " -o b.mesh -q --feature-angle 30 --report b.json", dir.path()).exit_code,
+            0);
+  const nlohmann::json a = read_json(dir.file("a.json")), b = read_json(dir.file("b.json"));
+  EXPECT_GT(a.at("curves").size(), 0u);
+  // A lower threshold makes more edges sharp: at least as many curves and patches.
+  EXPECT_GE(b.at("curves").size(), a.at("curves").size());
+  EXPECT_GE(b.at("patches").size(), a.at("patches").size());
+  for (const auto& c : a.at("curves")) EXPECT_TRUE(c.at("is_chain").get<bool>()) << c.at("name");
+  EXPECT_EQ(a.at("corners_present"), a.at("corners_expected"));
+}
+
+TEST(CliInputs, OpenTriangleSurfaceIsRejected) {
+  ScratchDir dir;
+  // One triangle: not a closed surface.
+  dir.write("open.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  const CliRun run = run_cli("open.off -o out.msh", dir.path());
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_NE(run.output.find("open.off"), std::string::npos) << run.output;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("out.msh")));
+}
+
+TEST(CliInputs, CorruptStepFileIsRejected) {
+  ScratchDir dir;
+  dir.write("part.step", "ISO-10303-21;\nHEADER;\nthis is not a step file\n");
+  const CliRun run = run_cli("part.step -o out.msh", dir.path());
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_NE(run.output.find("part.step"), std::string::npos) << run.output;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("out.msh")));
+}
+
+}  // namespace
+}  // namespace rdmesh::test
