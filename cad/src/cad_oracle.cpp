@@ -167,7 +167,7 @@ std::optional<SurfaceHit> CadOracle::intersect(const Point3& a, const Point3& b)
   const Model& m = *model_;
   const Point3 d = b - a;
   const double len = norm(d);
-  if (!(len > 0)) return std::nullopt;
+  if (!(len > 0) || !std::isfinite(len)) return std::nullopt;
   try {
     const std::optional<RayHit> h = first_hit(a, d);
     if (h && !(h->tangent && std::fabs(h->cosine) < 1e-6)) {
@@ -181,7 +181,7 @@ std::optional<SurfaceHit> CadOracle::intersect(const Point3& a, const Point3& b)
   if (la == lb) return std::nullopt;
   double lo = 0, hi = 1;
   SubdomainId lhi = lb;
-  while ((hi - lo) * len > m.tolerance) {
+  for (int it = 0; it < 200 && (hi - lo) * len > m.tolerance; ++it) {
     const double mid = 0.5 * (lo + hi);
     const SubdomainId l = locate(a + mid * d);
     if (l == la) {
