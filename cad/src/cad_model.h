@@ -96,6 +96,8 @@ namespace cad {
 std::unique_ptr<CadOracle::Model> build_model(ReadShape read, const std::string& source);
 /// Picks points inside each face from a coarse tessellation (cad_seeds.cpp).
 void compute_seeds(CadOracle::Model& model);
+/// Removes OpenCASCADE's message printers (once; its translators print to stdout).
+void silence_opencascade();
 /// "STANDARD_FAILURE_TYPE: message" of an OpenCASCADE exception.
 std::string describe(const Standard_Failure& e);
 }  // namespace cad

@@ -141,12 +141,7 @@ void heal(ReadShape& r, const std::string& path) {
 }  // namespace
 
 ReadShape read_shape(const std::string& path, const CadOptions& options) {
-  // OpenCASCADE's translators print to stdout; our errors say what went wrong.
-  static const bool silenced = [] {
-    Message::DefaultMessenger()->ChangePrinters().Clear();
-    return true;
-  }();
-  (void)silenced;
+  silence_opencascade();
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path, "no such file");
   if (!std::ifstream(path).good()) throw InputError(path, "cannot open the file");
@@ -177,6 +172,15 @@ ReadShape read_shape(const std::string& path, const CadOptions& options) {
     throw InputError(path, "OpenCASCADE failed to read the model: " + describe(e));
   }
   return r;
+}
+
+void silence_opencascade() {
+  // OpenCASCADE's translators print to stdout; our errors say what went wrong.
+  static const bool silenced = [] {
+    Message::DefaultMessenger()->ChangePrinters().Clear();
+    return true;
+  }();
+  (void)silenced;
 }
 
 std::string describe(const Standard_Failure& e) {

@@ -60,6 +60,7 @@ std::unique_ptr<CadOracle> make_cad_test_oracle(CadTestShape kind) {
 
 void write_cad_test_shape(CadTestShape kind, const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
+  cad::silence_opencascade();
   try {
     const TopoDS_Shape shape = make_shape(kind);
     bool ok = false;

@@ -1,0 +1,153 @@
+#!/usr/bin/env python3
+"""CAD benchmark: rdmesh vs Gmsh (gmsh -3 -nt 1) on STEP files at the same target size.
+
+usage: cad_bench.py BUILD_DIR [STEP_DIR] [--timeout S] [--divisions N] [--out TABLE.md]
+
+For each file: the target size is h = bbox diagonal / N (default 20); rdmesh runs
+`rdmesh FILE --size h`, Gmsh runs `gmsh FILE -3 -nt 1 -clmax h`. Both outputs are
+read back here (Gmsh .msh 4.1 ASCII, pure Python): tets, min dihedral angle and
+volume error against OpenCASCADE's exact volume (rdmesh_cad_tool info).
+"""
+import argparse
+import glob
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+import time
+
+
+def run(cmd, timeout):
+    t0 = time.monotonic()
+    try:
+        p = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
+    except subprocess.TimeoutExpired:
+        return None, time.monotonic() - t0, "timeout after %.0f s" % timeout
+    dt = time.monotonic() - t0
+    if p.returncode != 0:
+        lines = (p.stderr.strip() or p.stdout.strip()).splitlines()
+        return None, dt, "exit %d: %s" % (p.returncode, lines[-1] if lines else "")
+    return p, dt, ""
+
+
+def read_msh_tets(path):
+    """Nodes and 4-node tetrahedra of an ASCII Gmsh 4.1 file."""
+    nodes, tets = {}, []
+    with open(path) as f:
+        lines = iter(f.read().split("\n"))
+    for line in lines:
+        if line == "$Nodes":
+            nblocks = int(next(lines).split()[0])
+            for _ in range(nblocks):
+                _, _, _, n = map(int, next(lines).split())
+                tags = [int(next(lines)) for _ in range(n)]
+                for t in tags:
+                    nodes[t] = tuple(map(float, next(lines).split()[:3]))
+        elif line == "$Elements":
+            nblocks = int(next(lines).split()[0])
+            for _ in range(nblocks):
+                _, _, etype, n = map(int, next(lines).split())
+                for _ in range(n):
+                    v = list(map(int, next(lines).split()))
+                    if etype == 4:
+                        tets.append(v[1:5])
+    return nodes, tets
+
+
+def sub(a, b):
+    return (a[0] - b[0], a[1] - b[1], a[2] - b[2])
+
+
+def cross(a, b):
+    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+
+
+def dot(a, b):
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+
+
+def tet_measures(nodes, tets):
+    """(total |volume|, min dihedral angle in degrees)."""
+    vol, min_dih = 0.0, 180.0
+    faces = ((1, 2, 3), (0, 3, 2), (0, 1, 3), (0, 2, 1))
+    for t in tets:
+        p = [nodes[i] for i in t]
+        v6 = dot(sub(p[1], p[0]), cross(sub(p[2], p[0]), sub(p[3], p[0])))
+        vol += abs(v6) / 6
+        n = [cross(sub(p[b], p[a]), sub(p[c], p[a])) for a, b, c in faces]
+        for k in range(4):
+            for l in range(k + 1, 4):
+                nk, nl = n[k], n[l]
+                d = math.sqrt(dot(nk, nk) * dot(nl, nl))
+                if d == 0:
+                    min_dih = 0.0
+                    continue
+                c = max(-1.0, min(1.0, dot(nk, nl) / d))  # outward normals: both flip together
+                min_dih = min(min_dih, 180 - math.degrees(math.acos(c)))
+    return vol, min_dih
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("build")
+    ap.add_argument("step_dir", nargs="?", default="/work/shared/data/step")
+    ap.add_argument("--timeout", type=float, default=120)
+    ap.add_argument("--divisions", type=float, default=20)
+    ap.add_argument("--out", default="")
+    args = ap.parse_args()
+    rdmesh = os.path.join(args.build, "cli", "rdmesh")
+    tool = os.path.join(args.build, "cad", "rdmesh_cad_tool")
+    files = sorted(glob.glob(os.path.join(args.step_dir, "*.st*p")))
+    rows = []
+    tmp = tempfile.mkdtemp(prefix="rdmesh_cad_bench_")
+    for path in files:
+        name = os.path.basename(path)
+        info_p, _, err = run([tool, "info", path], args.timeout)
+        if info_p is None:
+            rows.append((name, "-", "fail: " + err, "fail: " + err))
+            print(name, "info failed:", err, file=sys.stderr)
+            continue
+        info = json.loads(info_p.stdout)
+        h = info["diagonal"] / args.divisions
+        exact = info["volume"]
+        cells = []
+        # rdmesh
+        out, rep = os.path.join(tmp, "r.msh"), os.path.join(tmp, "r.json")
+        p, dt, err = run([rdmesh, path, "-o", out, "-q", "--size", repr(h), "--report", rep], args.timeout)
+        if p is None:
+            cells.append("fail: " + err)
+        else:
+            r = json.load(open(rep))
+            v = sum(s["volume"] for s in r["subdomains"])
+            guard = " guard" if r["guard"]["fired"] else ""
+            cells.append("%.2f s, %d tets, %.1f deg, %.2f%%%s" % (
+                dt, r["tets"], r["min_dihedral_deg"], 100 * abs(v - exact) / exact, guard))
+        # Gmsh
+        gout = os.path.join(tmp, "g.msh")
+        p, dt, err = run(["gmsh", path, "-3", "-nt", "1", "-clmax", repr(h), "-format", "msh41",
+                          "-o", gout], args.timeout)
+        if p is None:
+            cells.append("fail: " + err)
+        else:
+            nodes, tets = read_msh_tets(gout)
+            if not tets:
+                cells.append("fail: no tetrahedron")
+            else:
+                v, dih = tet_measures(nodes, tets)
+                cells.append("%.2f s, %d tets, %.1f deg, %.2f%%" % (dt, len(tets), dih,
+                                                                   100 * abs(v - exact) / exact))
+        rows.append((name, "%.4g" % h, cells[0], cells[1]))
+        print(" | ".join(rows[-1]), file=sys.stderr, flush=True)
+    table = ["| file | h | rdmesh (time, tets, min dihedral, volume error) | gmsh -3 -nt 1 (same) |",
+             "|---|---|---|---|"]
+    table += ["| %s | %s | %s | %s |" % r for r in rows]
+    text = "\n".join(table) + "\n"
+    if args.out:
+        open(args.out, "w").write(text)
+    print(text)
+
+
+if __name__ == "__main__":
+    main()
