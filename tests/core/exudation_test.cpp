@@ -16,6 +16,7 @@
 
 #include "capped_cylinder_oracle.h"
 #include "mesh_checks.h"
+#include "test_domains.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/implicit_oracle.h"
 #include "rdmesh/mesh_measures.h"
@@ -24,31 +25,10 @@
 namespace rdmesh {
 namespace {
 
-Criteria uniform_criteria(double h) {
-  Criteria c;
-  c.facet_size = c.cell_size = ScalarField::uniform(h);
-  c.facet_distance = h / 10;
-  c.facet_angle_deg = 25;
-  c.cell_radius_edge = 2;
-  return c;
-}
-
-ImplicitOracle unit_sphere() {
-  return ImplicitOracle({{-1.2, -1.2, -1.2}, {1.2, 1.2, 1.2}},
-                        {[](const Point3& p) { return squared_norm(p) - 1.0; }});
-}
-
-double torus(const Point3& p) {
-  const double q = std::sqrt(p.x * p.x + p.y * p.y) - 1.0;
-  return q * q + p.z * p.z - 0.35 * 0.35;
-}
-
-ImplicitOracle nested_spheres() {
-  return ImplicitOracle({{-1.2, -1.2, -1.2}, {1.2, 1.2, 1.2}},
-                        {[](const Point3& p) { return squared_norm(p) - 0.25; },
-                         [](const Point3& p) { return squared_norm(p) - 1.0; }},
-                        {{"core", {0}, {}}, {"shell", {1}, {0}}});
-}
+using test::nested_spheres;
+using test::torus;
+using test::uniform_criteria;
+using test::unit_sphere;
 
 using Triangle = std::tuple<std::array<double, 9>, int>;  ///< sorted corner coordinates, patch
 
@@ -105,6 +85,7 @@ Runs mesh_both(const DomainOracle& oracle, const Criteria& criteria, bool pertur
   MeshOptions on;
   on.exudation.self_check = true;
   on.exudation.perturb = perturb;
+  on.exudation.perturb_bound_deg = 25;  // more moves than the default, to exercise them
   return {generate_mesh(oracle, criteria, off), generate_mesh(oracle, criteria, on)};
 }
 
@@ -195,7 +176,7 @@ TEST(Exudation, NestedSpheresKeepTheirInterfaceAndBothLabels) {
   EXPECT_EQ(labels, (std::set<int>{1, 2}));
 }
 
-TEST(Exudation, PerturbationThenExudationKeepTheBoundary) {
+TEST(Exudation, PerturbationOfWeightedVerticesKeepsTheBoundary) {
   const ImplicitOracle oracle = nested_spheres();
   Criteria criteria = uniform_criteria(0.1);
   criteria.facet_distance = 0.003;

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "mesh_checks.h"
+#include "test_domains.h"
 #include "rdmesh/domain_file.h"
 #include "rdmesh/mesh_measures.h"
 #include "rdmesh/mesher.h"
@@ -20,9 +21,8 @@ struct Meshed {
 };
 
 Meshed mesh_sample(const std::string& name, double h) {
-  Meshed m{load_domain_file(std::string(RDMESH_SOURCE_DIR) + "/samples/" + name), {}, {}};
-  m.criteria.edge_size = m.criteria.facet_size = m.criteria.cell_size = ScalarField::uniform(h);
-  m.criteria.facet_distance = h / 10;
+  Meshed m{load_domain_file(std::string(RDMESH_SOURCE_DIR) + "/samples/" + name),
+           test::uniform_criteria(h), {}};
   m.result = generate_mesh(*m.domain.oracle, m.criteria);
   return m;
 }

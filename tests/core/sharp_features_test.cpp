@@ -9,18 +9,12 @@
 
 #include "capped_cylinder_oracle.h"
 #include "mesh_checks.h"
+#include "test_domains.h"
 #include "rdmesh/mesh_measures.h"
 #include "rdmesh/mesher.h"
 
 namespace rdmesh {
 namespace {
-
-Criteria criteria_for(double h) {
-  Criteria c;
-  c.edge_size = c.facet_size = c.cell_size = ScalarField::uniform(h);
-  c.facet_distance = h / 10;
-  return c;
-}
 
 /// Edges of `curve` form one closed cycle (every vertex of degree 2, connected).
 void expect_closed_chain(const TetMesh& mesh, CurveId curve) {
@@ -58,7 +52,7 @@ void expect_edges_in_mesh(const TetMesh& mesh) {
 
 TEST(SharpFeatures, CappedCylinderHasThreePatchesAndTwoClosedChains) {
   const test::CappedCylinderOracle oracle(0.5, 0.5);
-  const Criteria criteria = criteria_for(0.1);
+  const Criteria criteria = test::uniform_criteria(0.1);
   const MeshResult result = generate_mesh(oracle, criteria);
   const TetMesh& mesh = result.mesh;
   test::expect_positive_orientation(mesh);

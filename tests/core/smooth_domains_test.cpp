@@ -8,6 +8,7 @@
 #include <set>
 
 #include "mesh_checks.h"
+#include "test_domains.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/implicit_oracle.h"
 #include "rdmesh/mesh_measures.h"
@@ -16,17 +17,13 @@
 namespace rdmesh {
 namespace {
 
+using test::nested_spheres;
+using test::torus;
+using test::uniform_criteria;
+using test::unit_sphere;
+
 using test::connected_components;
 using test::patch_triangles;
-
-Criteria uniform_criteria(double h) {
-  Criteria c;
-  c.facet_size = c.cell_size = ScalarField::uniform(h);
-  c.facet_distance = h / 10;
-  c.facet_angle_deg = 25;
-  c.cell_radius_edge = 2;
-  return c;
-}
 
 /// Refinement's own output: labels at circumcenters and R5.1 are properties of
 /// D|O before sliver exudation, which changes tets (see exudation_test.cpp).
@@ -34,16 +31,6 @@ MeshOptions refinement_only() {
   MeshOptions o;
   o.exudation.enabled = false;
   return o;
-}
-
-ImplicitOracle unit_sphere() {
-  return ImplicitOracle({{-1.2, -1.2, -1.2}, {1.2, 1.2, 1.2}},
-                        {[](const Point3& p) { return squared_norm(p) - 1.0; }});
-}
-
-double torus(const Point3& p) {
-  const double q = std::sqrt(p.x * p.x + p.y * p.y) - 1.0;
-  return q * q + p.z * p.z - 0.35 * 0.35;
 }
 
 void expect_valid_mesh(const TetMesh& mesh, const DomainOracle& oracle) {
@@ -91,11 +78,7 @@ TEST(SmoothDomains, TorusHasEulerCharacteristicZero) {
 
 TEST(SmoothDomains, NestedSpheresShareTheirInterface) {
   // Subdomain 1: inner ball (r = 0.5); subdomain 2: the shell between r = 0.5 and r = 1.
-  const ImplicitOracle oracle(
-      {{-1.2, -1.2, -1.2}, {1.2, 1.2, 1.2}},
-      {[](const Point3& p) { return squared_norm(p) - 0.25; },
-       [](const Point3& p) { return squared_norm(p) - 1.0; }},
-      {{"core", {0}, {}}, {"shell", {1}, {0}}});
+  const ImplicitOracle oracle = nested_spheres();
   Criteria criteria = uniform_criteria(0.1);
   criteria.facet_distance = 0.003;  // the inner sphere is small: keep the volume error < 2%
   const MeshResult result = generate_mesh(oracle, criteria, refinement_only());
