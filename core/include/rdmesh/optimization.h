@@ -31,6 +31,8 @@ struct ExudationOptions {
   double max_weight_ratio = 0.4;
   /// At most this many accepted weight changes per vertex.
   int max_moves_per_vertex = 8;
+  /// Pumping passes; pass k of n treats the vertices below k/n of the sliver bound.
+  int passes = 1;
   /// New tetrahedra must satisfy the refinement rules for cells as the
   /// criteria state them: R5.1 (circumradius <= cell_size at the circumcenter)
   /// when keep_cell_size, R5.2 (radius-edge ratio <= cell_radius_edge) when
@@ -39,10 +41,13 @@ struct ExudationOptions {
   /// by default, as in CGAL's exuder.
   bool keep_cell_size = false;
   bool keep_radius_edge = false;
-  /// Before pumping weights, move volume vertices incident to slivers along
+  /// After pumping, move the volume vertices of the remaining slivers along
   /// the gradient of their worst dihedral angle (sliver perturbation), only
-  /// where the moved region lies inside one subdomain away from the boundary.
+  /// where the changed region lies inside one subdomain away from the
+  /// boundary, then pump again.
   bool perturb = false;
+  /// The perturbation treats the vertices of tets below this angle (degrees).
+  double perturb_bound_deg = 15;
   /// Debug self-check after exudation (slow): the regular triangulation is
   /// valid, both sides of every facet hold the same restricted data, and
   /// labels differ exactly across restricted facets. Throws InternalError.
@@ -60,8 +65,9 @@ struct ExudationStats {
   std::size_t moves_tried = 0;     ///< vertices whose weight was pumped
   std::size_t moves_accepted = 0;  ///< weight changes applied to the triangulation
   std::size_t perturb_moves_tried = 0;     ///< volume vertices the perturbation tried to move
+  /// (moves_tried / moves_accepted count the pumps of both pumping rounds)
   std::size_t perturb_moves_accepted = 0;  ///< vertex moves kept
-  double min_dihedral_after_perturb_deg = 0;  ///< when ExudationOptions::perturb
+  double min_dihedral_after_perturb_deg = 0;  ///< after the first pumping and the perturbation
   double perturb_seconds = 0;                 ///< included in `seconds`
   bool time_limit_reached = false;
   double seconds = 0;

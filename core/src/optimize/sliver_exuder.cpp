@@ -28,6 +28,11 @@ void validate(const ExudationOptions& o) {
   if (!(o.max_weight_ratio >= 0 && o.max_weight_ratio < 1))
     throw InputError("exudation weight ratio must be in [0, 1), got " +
                      std::to_string(o.max_weight_ratio));
+  if (!(o.perturb_bound_deg > 0 && o.perturb_bound_deg <= 90))
+    throw InputError("perturbation bound must be in (0, 90] degrees, got " +
+                     std::to_string(o.perturb_bound_deg));
+  if (o.passes < 1)
+    throw InputError("exudation passes must be >= 1, got " + std::to_string(o.passes));
   if (o.max_moves_per_vertex < 0)
     throw InputError("exudation moves per vertex must be >= 0, got " +
                      std::to_string(o.max_moves_per_vertex));
@@ -75,8 +80,13 @@ class Exuder {
     stats.ran = true;
     measure(tr_, stats.min_dihedral_before_deg, stats.histogram_before);
     std::uint32_t next_stamp = prepare();
-    if (options_.perturb) {
+    next_stamp = pump_passes(stats, next_stamp);
+    if (options_.perturb && !stats.time_limit_reached) {
+      // Slivers the weights could not remove: move their volume vertices, then pump again.
+      const double t = elapsed();
       VertexPerturber perturber(tr_, next_stamp);
+      bound_cosine_ = std::cos(options_.perturb_bound_deg * M_PI / 180);
+      requeue();
       process(
           [&](Vertex_handle v, int) -> const std::vector<Cell_handle>* {
             if (v->info().dim != FeatureDim::kVolume) return nullptr;
@@ -86,14 +96,28 @@ class Exuder {
             return &perturber.new_cells();
           },
           stats.time_limit_reached);
-      next_stamp = perturber.next_stamp();
       DihedralHistogram histogram;
       measure(tr_, stats.min_dihedral_after_perturb_deg, histogram);
-      stats.perturb_seconds = elapsed();
-      if (!stats.time_limit_reached) prepare();  // nearest neighbours moved
+      stats.perturb_seconds = elapsed() - t;
+      if (!stats.time_limit_reached) {
+        prepare();  // nearest neighbours moved
+        pump_passes(stats, perturber.next_stamp());
+      }
     }
+    measure(tr_, stats.min_dihedral_after_deg, stats.histogram_after);
+    stats.seconds = elapsed();
+    return stats;
+  }
+
+ private:
+  /// Weight pumping in passes of rising sliver bound (the worst slivers first
+  /// across the whole mesh, then the milder ones); returns the next free stamp.
+  std::uint32_t pump_passes(ExudationStats& stats, std::uint32_t next_stamp) {
     WeightPump pump(tr_, next_stamp, limits_);
-    if (!stats.time_limit_reached) {
+    const int passes = std::max(1, options_.passes);
+    for (int pass = 1; pass <= passes && !stats.time_limit_reached; ++pass) {
+      bound_cosine_ = std::cos(options_.sliver_bound_deg * pass / passes * M_PI / 180);
+      requeue();
       process(
           [&](Vertex_handle v, int id) -> const std::vector<Cell_handle>* {
             ++stats.moves_tried;
@@ -104,12 +128,9 @@ class Exuder {
           },
           stats.time_limit_reached);
     }
-    measure(tr_, stats.min_dihedral_after_deg, stats.histogram_after);
-    stats.seconds = elapsed();
-    return stats;
+    return pump.next_stamp();
   }
 
- private:
   double elapsed() const {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   }
@@ -169,14 +190,11 @@ class Exuder {
     std::uint32_t max_stamp = 0;
     for (auto c = tr_.all_cells_begin(); c != tr_.all_cells_end(); ++c)
       max_stamp = std::max(max_stamp, c->info().stamp);
-    queue_ = {};
     int n = 0;
     for (auto v = tr_.finite_vertices_begin(); v != tr_.finite_vertices_end(); ++v)
       v->info().index = n++;
     nearest_sq_.assign(static_cast<std::size_t>(n), std::numeric_limits<double>::infinity());
     moves_.assign(static_cast<std::size_t>(n), 0);
-    dirty_.assign(static_cast<std::size_t>(n), 1);
-    std::vector<double> worst(static_cast<std::size_t>(n), -std::numeric_limits<double>::infinity());
     for (auto e = tr_.finite_edges_begin(); e != tr_.finite_edges_end(); ++e) {
       const Vertex_handle a = e->first->vertex(e->second), b = e->first->vertex(e->third);
       const double d2 = squared_norm(to_point3(a->point()) - to_point3(b->point()));
@@ -185,6 +203,16 @@ class Exuder {
       na = std::min(na, d2);
       nb = std::min(nb, d2);
     }
+    requeue();
+    return max_stamp + 1;
+  }
+
+  /// Queues every vertex incident to a domain cell below the current bound.
+  void requeue() {
+    const std::size_t n = moves_.size();
+    queue_ = {};
+    dirty_.assign(n, 1);
+    std::vector<double> worst(n, -std::numeric_limits<double>::infinity());
     for (auto c = tr_.finite_cells_begin(); c != tr_.finite_cells_end(); ++c) {
       if (c->info().label == 0) continue;
       const double cosine = cell_cosine(c);
@@ -197,7 +225,6 @@ class Exuder {
       const double w = worst[v->info().index];
       if (w > bound_cosine_) queue_.push({w, v});
     }
-    return max_stamp + 1;
   }
 
   /// Worst cosine over the domain cells incident to v.

@@ -12,7 +12,9 @@
 namespace rdmesh::detail {
 namespace {
 
-Weighted_point unweighted(const Point3& p) { return to_weighted(p); }
+Weighted_point weighted(const Point3& p, double w) {
+  return Weighted_point(Kernel::Point_3(p.x, p.y, p.z), w);
+}
 
 double cell_cosine(Cell_handle c) {
   return max_dihedral_cosine(to_point3(c->vertex(0)->point()), to_point3(c->vertex(1)->point()),
@@ -44,7 +46,7 @@ Point3 VertexPerturber::angle_gradient(Cell_handle c, Vertex_handle v, double h)
 
 bool VertexPerturber::movable_to(Vertex_handle v, const Point3& p, int label, double nearest,
                                  double& worst) {
-  const Weighted_point wp = unweighted(p);
+  const Weighted_point wp = weighted(p, v->point().weight());
   Triangulation::Locate_type lt;
   int li = 0, lj = 0;
   const Cell_handle c = tr_.locate(wp, lt, li, lj, v->cell());
@@ -66,12 +68,30 @@ bool VertexPerturber::movable_to(Vertex_handle v, const Point3& p, int label, do
       worst = std::max(worst, cell_cosine(z));
     }
   }
-  return true;
+  // No vertex may get hidden: each vertex of a destroyed cell keeps a cell
+  // that is neither incident to v nor in conflict with p.
+  for (const Cell_handle& z : conflicts_) z->tds_data().mark_in_conflict();
+  bool hidden = false;
+  for (const Cell_handle& z : conflicts_) {
+    for (int k = 0; k < 4 && !hidden; ++k) {
+      const Vertex_handle u = z->vertex(k);
+      if (u == v) continue;
+      incident_.clear();
+      tr_.incident_cells(u, std::back_inserter(incident_));
+      hidden = std::none_of(incident_.begin(), incident_.end(), [&](const Cell_handle& x) {
+        return !x->has_vertex(v) && !x->tds_data().is_in_conflict();
+      });
+    }
+  }
+  for (const Cell_handle& z : conflicts_) z->tds_data().clear();
+  return !hidden;
 }
 
 double VertexPerturber::move(Vertex_handle v, const Point3& p, int label) {
   const std::uint32_t first_new = next_stamp_;
-  if (tr_.move_if_no_collision(v, unweighted(p)) != v)
+  const std::size_t vertices = tr_.number_of_vertices();
+  if (tr_.move_if_no_collision(v, weighted(p, v->point().weight())) != v ||
+      tr_.number_of_vertices() != vertices)
     throw InternalError("perturbation: a vertex collided although it was kept away from all others");
   // New cells have the default stamp 0: collect them from the new star.
   new_cells_.clear();
@@ -105,7 +125,7 @@ double VertexPerturber::move(Vertex_handle v, const Point3& p, int label) {
 }
 
 bool VertexPerturber::perturb(Vertex_handle v, double nearest) {
-  if (v->info().dim != FeatureDim::kVolume || v->point().weight() != 0) return false;
+  if (v->info().dim != FeatureDim::kVolume) return false;
   star_.clear();
   tr_.incident_cells(v, std::back_inserter(star_));
   const int label = star_.front()->info().label;

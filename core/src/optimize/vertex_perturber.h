@@ -1,11 +1,12 @@
-// Private to core/: sliver perturbation [Li and Teng; Tournois et al.] of
-// volume vertices, run before exudation while all weights are zero.
+// Private to core/: sliver perturbation of volume vertices, after weight
+// pumping, on the slivers it could not remove.
 //
 // A volume vertex v (FeatureDim::kVolume) incident to a sliver is moved along
 // the gradient of the smallest dihedral angle of its worst incident domain
 // cell, by a fraction of its nearest-neighbour distance. A move from v to p
-// destroys exactly the star of v and the cells of the triangulation whose
-// Delaunay ball contains p (weights are zero, no vertex can be hidden). The
+// (keeping v's weight) destroys exactly the star of v and the cells of the
+// triangulation in conflict with the weighted point at p, provided no vertex
+// gets hidden (checked: each vertex keeps a cell outside that set). The
 // move is tried only when all those cells carry the same label and none has
 // a restricted facet: then every new cell gets that label, and the restricted
 // facets and labels of the rest are untouched, so D|S stays identical. The
@@ -50,6 +51,7 @@ class VertexPerturber {
   std::vector<Cell_handle> conflicts_;
   std::vector<Triangulation::Facet> facets_;
   std::vector<Cell_handle> new_cells_;
+  std::vector<Cell_handle> incident_;
 };
 
 }  // namespace rdmesh::detail

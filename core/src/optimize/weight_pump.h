@@ -67,6 +67,8 @@ class WeightPump {
   /// The cells created by the last accepted pump (the star of its vertex).
   const std::vector<Cell_handle>& new_cells() const { return new_cells_; }
 
+  std::uint32_t next_stamp() const { return next_stamp_; }
+
  private:
   struct Frontier {
     double crit;
