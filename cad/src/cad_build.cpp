@@ -9,6 +9,7 @@
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
 #include <GeomAdaptor_Curve.hxx>
+#include <GeomAdaptor_Surface.hxx>
 #include <Geom_BSplineCurve.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
@@ -120,6 +121,8 @@ void collect_faces(CadOracle::Model& m, TopTools_IndexedMapOfShape& patch_faces)
     BRepTools::UVBounds(face, fp.u0, fp.u1, fp.v0, fp.v1);
     fp.box = box_of(face, 0);
     fp.classifier = std::make_unique<BRepTopAdaptor_FClass2d>(face, BRep_Tool::Tolerance(face));
+    const GeomAdaptor_Surface adaptor(fp.surface);
+    if (adaptor.GetType() == GeomAbs_Plane) fp.plane = adaptor.Plane();
     fp.outward_of = SubdomainId(first_owner);
     fp.inward_of = SubdomainId(labels[0] == first_owner ? labels[1] : labels[0]);
     const int id = static_cast<int>(m.faces.size()) + 1;

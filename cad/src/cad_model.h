@@ -8,7 +8,9 @@
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
 #include <TopoDS_Solid.hxx>
+#include <gp_Pln.hxx>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -66,6 +68,8 @@ struct FacePatch {
   double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
   Box3 box;
   std::unique_ptr<BRepTopAdaptor_FClass2d> classifier;
+  /// Set for planar faces: intersected analytically, then classified in (u, v).
+  std::optional<gp_Pln> plane;
   /// The face's normal (surface normal, flipped for a reversed face) points out
   /// of subdomain `outward_of` into subdomain `inward_of` (either may be 0).
   SubdomainId outward_of, inward_of;

@@ -4,6 +4,7 @@
 #include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
 #include <BRepGProp.hxx>
+#include <ElSLib.hxx>
 #include <GProp_GProps.hxx>
 #include <GeomAPI_ProjectPointOnSurf.hxx>
 #include <IntCurvesFace_Intersector.hxx>
@@ -102,6 +103,30 @@ std::vector<Point3> CadOracle::initial_points(PatchId patch) const {
   return model_->seeds[patch.value - 1];
 }
 
+void CadOracle::plane_hit(const cad::FacePatch& f, int index, const Point3& a, const Point3& d,
+                          double len, std::optional<RayHit>& best) const {
+  const gp_Ax3& ax = f.plane->Position();
+  const gp_Dir nd = ax.XDirection().Crossed(ax.YDirection());  // du x dv
+  const Point3 n{nd.X(), nd.Y(), nd.Z()};
+  const gp_Pnt& o = ax.Location();
+  const double denom = dot(n, d);
+  if (denom == 0) return;
+  const double t = dot(n, Point3{o.X(), o.Y(), o.Z()} - a) / denom;
+  if (!(t >= 0 && t <= 1) || (best && t * len >= best->distance)) return;
+  const Point3 x = a + t * d;
+  double u, v;
+  ElSLib::Parameters(*f.plane, to_gp(x), u, v);
+  const TopAbs_State state = f.classifier->Perform(gp_Pnt2d(u, v));
+  if (state != TopAbs_IN && state != TopAbs_ON) return;
+  RayHit h;
+  h.distance = t * len;
+  h.face = index;
+  h.point = x;
+  h.tangent = state == TopAbs_ON;
+  h.cosine = denom / len * (f.face.Orientation() == TopAbs_REVERSED ? -1 : 1);
+  best = h;
+}
+
 std::optional<CadOracle::RayHit> CadOracle::first_hit(const Point3& a, const Point3& d) const {
   const Model& m = *model_;
   const double len = norm(d);
@@ -118,9 +143,19 @@ std::optional<CadOracle::RayHit> CadOracle::first_hit(const Point3& a, const Poi
   std::optional<RayHit> best;
   for (const auto& [entry, i] : cand) {
     if (best && entry * len > best->distance) break;  // boxes sorted by entry
+    if (m.faces[i].plane) {
+      plane_hit(m.faces[i], i, a, d, len, best);
+      continue;
+    }
     std::unique_ptr<IntCurvesFace_Intersector>& x = cache.faces[i];
     if (!x) x = std::make_unique<IntCurvesFace_Intersector>(m.faces[i].face, 0.1 * m.tolerance);
-    x->Perform(line, 0.0, best ? best->distance : len);
+    const double upper = best ? best->distance : len;
+    if (!(upper > 1e-12 * len)) continue;  // a hit at the start point already
+    try {
+      x->Perform(line, 0.0, upper);
+    } catch (const Standard_Failure&) {
+      continue;  // a degenerate sub-problem of this face: no crossing found there
+    }
     if (!x->IsDone()) continue;
     for (int k = 1; k <= x->NbPnt(); ++k) {
       const double w = x->WParameter(k);

@@ -45,6 +45,10 @@
 
 namespace rdmesh {
 
+namespace cad {
+struct FacePatch;
+}
+
 /// How a CAD file is loaded.
 struct CadOptions {
   /// Run OpenCASCADE shape healing (ShapeFix_Shape) before meshing; what it
@@ -97,6 +101,9 @@ class CadOracle final : public DomainOracle {
   };
   /// The first crossing of segment [a, a + d] with a face (per-thread intersectors).
   std::optional<RayHit> first_hit(const Point3& a, const Point3& d) const;
+  /// The crossing with a planar face, analytically, if nearer than `best`.
+  void plane_hit(const cad::FacePatch& f, int index, const Point3& a, const Point3& d, double len,
+                 std::optional<RayHit>& best) const;
 
   std::unique_ptr<Model> model_;
   std::uint64_t serial_;  // identifies this oracle in the per-thread caches
