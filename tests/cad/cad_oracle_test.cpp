@@ -4,6 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <thread>
+#include <vector>
+
 #include "oracles/oracle_conformance.h"
 
 namespace rdmesh {
@@ -55,6 +59,41 @@ TEST(CadOracle, TwoBoxesShareAnInterfacePatch) {
   ASSERT_TRUE(hit);
   EXPECT_NEAR(hit->point.x, 10, 1e-9);
   EXPECT_NEAR(oracle->exact_volume(), 2000, 1e-6);
+}
+
+}  // namespace
+}  // namespace rdmesh
+
+namespace rdmesh {
+namespace {
+
+// Queries from several threads give the serial answers (per-thread OpenCASCADE state).
+TEST(CadOracle, ConcurrentQueriesMatchSerialOnes) {
+  const auto oracle = make_cad_test_oracle(CadTestShape::box_minus_cylinder);
+  const Box3 box = oracle->bounding_box();
+  std::vector<Point3> pts;
+  for (int i = 0; i < 400; ++i) {
+    const double s = (i * 0.6180339887) - std::floor(i * 0.6180339887);
+    const double t = (i * 0.7548776662) - std::floor(i * 0.7548776662);
+    const double u = (i * 0.5698402910) - std::floor(i * 0.5698402910);
+    pts.push_back({box.lo.x + s * (box.hi.x - box.lo.x), box.lo.y + t * (box.hi.y - box.lo.y),
+                   box.lo.z + u * (box.hi.z - box.lo.z)});
+  }
+  auto answers = [&] {
+    std::vector<double> out;
+    for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
+      out.push_back(oracle->locate(pts[i]).value);
+      const auto hit = oracle->intersect(pts[i], pts[i + 1]);
+      out.push_back(hit ? hit->point.x + hit->patch.value : -1.0);
+    }
+    return out;
+  };
+  const std::vector<double> serial = answers();
+  std::vector<std::vector<double>> results(4);
+  std::vector<std::thread> threads;
+  for (auto& r : results) threads.emplace_back([&r, &answers] { r = answers(); });
+  for (auto& t : threads) t.join();
+  for (const auto& r : results) EXPECT_EQ(r, serial);
 }
 
 }  // namespace
