@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "oracles/oracle_conformance.h"
+#include "rdmesh/errors.h"
 
 namespace rdmesh {
 namespace {
@@ -94,6 +95,28 @@ TEST(CadOracle, ConcurrentQueriesMatchSerialOnes) {
   for (auto& r : results) threads.emplace_back([&r, &answers] { r = answers(); });
   for (auto& t : threads) t.join();
   for (const auto& r : results) EXPECT_EQ(r, serial);
+}
+
+}  // namespace
+}  // namespace rdmesh
+
+namespace rdmesh {
+namespace {
+
+// The conformance suite on shared STEP files (skipped when the data is absent).
+TEST(CadOracle, SharedStepFilesPassConformance) {
+  const std::string dir = "/work/shared/data/step/";
+  for (const char* f : {"cadquery_red_cube_blue_cylinder.step", "gmsh_torus_step_header_data.stp",
+                        "gmsh_box_step_boundary_colors.stp"}) {
+    SCOPED_TRACE(f);
+    std::unique_ptr<CadOracle> o;
+    try {
+      o = load_cad_file(dir + f);
+    } catch (const InputError&) {
+      GTEST_SKIP() << dir << " is absent";
+    }
+    expect_oracle_conformance(*o, 400);
+  }
 }
 
 }  // namespace
