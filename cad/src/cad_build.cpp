@@ -122,7 +122,10 @@ void collect_faces(CadOracle::Model& m, TopTools_IndexedMapOfShape& patch_faces)
     fp.box = box_of(face, 0);
     fp.classifier = std::make_unique<BRepTopAdaptor_FClass2d>(face, BRep_Tool::Tolerance(face));
     const GeomAdaptor_Surface adaptor(fp.surface);
-    if (adaptor.GetType() == GeomAbs_Plane) fp.plane = adaptor.Plane();
+    const GeomAbs_SurfaceType type = adaptor.GetType();
+    if (type == GeomAbs_Plane) fp.plane = adaptor.Plane();
+    fp.quadric = type == GeomAbs_Cylinder || type == GeomAbs_Cone || type == GeomAbs_Sphere ||
+                 type == GeomAbs_Torus;
     fp.outward_of = SubdomainId(first_owner);
     fp.inward_of = SubdomainId(labels[0] == first_owner ? labels[1] : labels[0]);
     const int id = static_cast<int>(m.faces.size()) + 1;

@@ -70,6 +70,9 @@ struct FacePatch {
   std::unique_ptr<BRepTopAdaptor_FClass2d> classifier;
   /// Set for planar faces: intersected analytically, then classified in (u, v).
   std::optional<gp_Pln> plane;
+  /// Cylinder, cone, sphere or torus: intersected in closed form by
+  /// IntCurveSurface_HInter (no polyhedron), then classified in (u, v).
+  bool quadric = false;
   /// The face's normal (surface normal, flipped for a reversed face) points out
   /// of subdomain `outward_of` into subdomain `inward_of` (either may be 0).
   SubdomainId outward_of, inward_of;

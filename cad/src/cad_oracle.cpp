@@ -7,6 +7,11 @@
 #include <ElSLib.hxx>
 #include <GProp_GProps.hxx>
 #include <GeomAPI_ProjectPointOnSurf.hxx>
+#include <GeomAdaptor_Curve.hxx>
+#include <GeomAdaptor_Surface.hxx>
+#include <Geom_Line.hxx>
+#include <IntCurveSurface_HInter.hxx>
+#include <IntCurveSurface_IntersectionPoint.hxx>
 #include <IntCurvesFace_Intersector.hxx>
 #include <algorithm>
 #include <array>
@@ -127,6 +132,39 @@ void CadOracle::plane_hit(const cad::FacePatch& f, int index, const Point3& a, c
   best = h;
 }
 
+void CadOracle::quadric_hit(const cad::FacePatch& f, int index, const Point3& a, const Point3& d,
+                            double len, std::optional<RayHit>& best) const {
+  const double upper = best ? best->distance : len;
+  if (!(upper > 1e-12 * len)) return;
+  const Handle(Geom_Line) line = new Geom_Line(to_gp(a), gp_Dir(d.x, d.y, d.z));
+  const Handle(GeomAdaptor_Curve) curve = new GeomAdaptor_Curve(line, 0.0, upper);
+  const Handle(GeomAdaptor_Surface) surface =
+      new GeomAdaptor_Surface(f.surface, f.u0, f.u1, f.v0, f.v1);
+  IntCurveSurface_HInter inter;
+  inter.Perform(curve, surface);
+  if (!inter.IsDone()) return;
+  for (int k = 1; k <= inter.NbPoints(); ++k) {
+    const IntCurveSurface_IntersectionPoint& ip = inter.Point(k);
+    const double w = ip.W();
+    if (w < 0 || w > len || (best && w >= best->distance)) continue;
+    const TopAbs_State state = f.classifier->Perform(gp_Pnt2d(ip.U(), ip.V()));
+    if (state != TopAbs_IN && state != TopAbs_ON) continue;
+    RayHit h;
+    h.distance = w;
+    h.face = index;
+    h.point = to_point(ip.Pnt());
+    h.tangent = ip.Transition() == IntCurveSurface_Tangent || state == TopAbs_ON;
+    gp_Pnt p;
+    gp_Vec du, dv;
+    f.surface->D1(ip.U(), ip.V(), p, du, dv);
+    gp_Vec n = du.Crossed(dv);
+    if (f.face.Orientation() == TopAbs_REVERSED) n.Reverse();
+    const double nn = n.Magnitude();
+    h.cosine = nn > 0 ? (n.X() * d.x + n.Y() * d.y + n.Z() * d.z) / (nn * len) : 0.0;
+    best = h;
+  }
+}
+
 std::optional<CadOracle::RayHit> CadOracle::first_hit(const Point3& a, const Point3& d) const {
   const Model& m = *model_;
   const double len = norm(d);
@@ -146,6 +184,14 @@ std::optional<CadOracle::RayHit> CadOracle::first_hit(const Point3& a, const Poi
     if (m.faces[i].plane) {
       plane_hit(m.faces[i], i, a, d, len, best);
       continue;
+    }
+    if (m.faces[i].quadric) {
+      try {
+        quadric_hit(m.faces[i], i, a, d, len, best);
+        continue;
+      } catch (const Standard_Failure&) {
+        // fall through to the general intersector
+      }
     }
     std::unique_ptr<IntCurvesFace_Intersector>& x = cache.faces[i];
     if (!x) x = std::make_unique<IntCurvesFace_Intersector>(m.faces[i].face, 0.1 * m.tolerance);

@@ -104,6 +104,9 @@ class CadOracle final : public DomainOracle {
   /// The crossing with a planar face, analytically, if nearer than `best`.
   void plane_hit(const cad::FacePatch& f, int index, const Point3& a, const Point3& d, double len,
                  std::optional<RayHit>& best) const;
+  /// The crossing with a cylinder, cone, sphere or torus face, in closed form.
+  void quadric_hit(const cad::FacePatch& f, int index, const Point3& a, const Point3& d, double len,
+                   std::optional<RayHit>& best) const;
 
   std::unique_ptr<Model> model_;
   std::uint64_t serial_;  // identifies this oracle in the per-thread caches
