@@ -126,6 +126,7 @@ void collect_faces(CadOracle::Model& m, TopTools_IndexedMapOfShape& patch_faces)
     if (type == GeomAbs_Plane) fp.plane = adaptor.Plane();
     fp.quadric = type == GeomAbs_Cylinder || type == GeomAbs_Cone || type == GeomAbs_Sphere ||
                  type == GeomAbs_Torus;
+    fp.spline = type == GeomAbs_BSplineSurface || type == GeomAbs_BezierSurface;
     fp.outward_of = SubdomainId(first_owner);
     fp.inward_of = SubdomainId(labels[0] == first_owner ? labels[1] : labels[0]);
     const int id = static_cast<int>(m.faces.size()) + 1;

@@ -73,6 +73,8 @@ struct FacePatch {
   /// Cylinder, cone, sphere or torus: intersected in closed form by
   /// IntCurveSurface_HInter (no polyhedron), then classified in (u, v).
   bool quadric = false;
+  /// B-spline or Bezier: intersected against a per-thread sampled polyhedron.
+  bool spline = false;
   /// The face's normal (surface normal, flipped for a reversed face) points out
   /// of subdomain `outward_of` into subdomain `inward_of` (either may be 0).
   SubdomainId outward_of, inward_of;

@@ -4,6 +4,7 @@
 #include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
 #include <BRepGProp.hxx>
+#include <Bnd_BoundSortBox.hxx>
 #include <ElSLib.hxx>
 #include <GProp_GProps.hxx>
 #include <GeomAPI_ProjectPointOnSurf.hxx>
@@ -12,6 +13,8 @@
 #include <Geom_Line.hxx>
 #include <IntCurveSurface_HInter.hxx>
 #include <IntCurveSurface_IntersectionPoint.hxx>
+#include <IntCurveSurface_ThePolygonOfHInter.hxx>
+#include <IntCurveSurface_ThePolyhedronOfHInter.hxx>
 #include <IntCurvesFace_Intersector.hxx>
 #include <algorithm>
 #include <array>
@@ -30,9 +33,17 @@ using cad::describe;
 gp_Pnt to_gp(const Point3& p) { return {p.x, p.y, p.z}; }
 Point3 to_point(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
 
+// A sampled free-form face: its polyhedron seeds IntCurveSurface_HInter.
+struct SampledFace {
+  Handle(GeomAdaptor_Surface) surface;
+  std::unique_ptr<IntCurveSurface_ThePolyhedronOfHInter> polyhedron;
+  Bnd_BoundSortBox boxes;
+};
+
 struct ThreadCache {
   std::uint64_t serial = 0;
   std::vector<std::unique_ptr<IntCurvesFace_Intersector>> faces;
+  std::vector<std::unique_ptr<SampledFace>> sampled;
   std::vector<std::pair<double, int>> candidates;  // (box entry, face index), reused
 };
 
@@ -47,6 +58,8 @@ ThreadCache& cache_for(std::uint64_t serial, std::size_t faces) {
   c.serial = serial;
   c.faces.clear();
   c.faces.resize(faces);
+  c.sampled.clear();
+  c.sampled.resize(faces);
   return c;
 }
 
@@ -141,7 +154,27 @@ void CadOracle::quadric_hit(const cad::FacePatch& f, int index, const Point3& a,
   const Handle(GeomAdaptor_Surface) surface =
       new GeomAdaptor_Surface(f.surface, f.u0, f.u1, f.v0, f.v1);
   IntCurveSurface_HInter inter;
-  inter.Perform(curve, surface);
+  if (f.quadric) {
+    inter.Perform(curve, surface);
+  } else {
+    // Free-form face: sample it once per thread, then reuse the polyhedron.
+    ThreadCache& cache = cache_for(serial_, model_->faces.size());
+    std::unique_ptr<SampledFace>& sf = cache.sampled[index];
+    if (!sf) {
+      sf = std::make_unique<SampledFace>();
+      sf->surface = surface;
+      const int nu =
+          std::clamp(surface->NbUIntervals(GeomAbs_C2) * (surface->UDegree() + 1), 10, 50);
+      const int nv =
+          std::clamp(surface->NbVIntervals(GeomAbs_C2) * (surface->VDegree() + 1), 10, 50);
+      sf->polyhedron = std::make_unique<IntCurveSurface_ThePolyhedronOfHInter>(
+          sf->surface, nu, nv, f.u0, f.v0, f.u1, f.v1);
+      sf->polyhedron->FillBounding();
+      sf->boxes.Initialize(sf->polyhedron->Bounding(), sf->polyhedron->ComponentsBounding());
+    }
+    const IntCurveSurface_ThePolygonOfHInter polygon(curve, 0.0, upper, 3);
+    inter.Perform(curve, polygon, sf->surface, *sf->polyhedron, sf->boxes);
+  }
   if (!inter.IsDone()) return;
   for (int k = 1; k <= inter.NbPoints(); ++k) {
     const IntCurveSurface_IntersectionPoint& ip = inter.Point(k);
@@ -185,7 +218,7 @@ std::optional<CadOracle::RayHit> CadOracle::first_hit(const Point3& a, const Poi
       plane_hit(m.faces[i], i, a, d, len, best);
       continue;
     }
-    if (m.faces[i].quadric) {
+    if (m.faces[i].quadric || m.faces[i].spline) {
       try {
         quadric_hit(m.faces[i], i, a, d, len, best);
         continue;
