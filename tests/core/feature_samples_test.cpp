@@ -27,19 +27,6 @@ Meshed mesh_sample(const std::string& name, double h) {
   return m;
 }
 
-/// Degree of each vertex in the edges of `curve`, and the number of edges.
-std::map<int, int> degrees(const TetMesh& mesh, CurveId curve, std::size_t& count) {
-  std::map<int, int> degree;
-  count = 0;
-  for (std::size_t e = 0; e < mesh.edges.size(); ++e) {
-    if (mesh.edge_curve[e] != curve) continue;
-    ++degree[mesh.edges[e][0]];
-    ++degree[mesh.edges[e][1]];
-    ++count;
-  }
-  return degree;
-}
-
 /// Each curve is one chain of consecutive samples: a cycle when closed, a path
 /// between its two corners when open; feature edges are edges of tetrahedra and
 /// stay within the facet distance of their curve; corners are mesh vertices.
@@ -61,7 +48,7 @@ void expect_feature_properties(const Meshed& m) {
   }
   for (const CurveInfo& c : mesh.curves) {
     std::size_t count = 0;
-    const std::map<int, int> degree = degrees(mesh, c.id, count);
+    const std::map<int, int> degree = test::curve_degrees(mesh, c.id, count);
     ASSERT_GE(count, c.closed ? 3u : 1u) << c.name;
     int ends = 0;
     for (const auto& [v, d] : degree) {

@@ -101,6 +101,18 @@ int connected_components(const std::vector<Face>& triangles) {
   return count;
 }
 
+std::map<int, int> curve_degrees(const TetMesh& mesh, CurveId curve, std::size_t& count) {
+  std::map<int, int> degree;
+  count = 0;
+  for (std::size_t e = 0; e < mesh.edges.size(); ++e) {
+    if (mesh.edge_curve[e] != curve) continue;
+    ++degree[mesh.edges[e][0]];
+    ++degree[mesh.edges[e][1]];
+    ++count;
+  }
+  return degree;
+}
+
 double volume(const TetMesh& mesh, SubdomainId sub) {
   double total = 0;
   for (std::size_t t = 0; t < mesh.tets.size(); ++t) {

@@ -29,6 +29,9 @@ std::vector<std::array<int, 3>> patch_triangles(const TetMesh& mesh, PatchId pat
 /// Number of edge-connected components of a triangle set.
 int connected_components(const std::vector<std::array<int, 3>>& triangles);
 
+/// Degree of each vertex in the feature edges of `curve`; `count` receives the number of edges.
+std::map<int, int> curve_degrees(const TetMesh& mesh, CurveId curve, std::size_t& count);
+
 /// Total volume of the tets labelled `sub` (all labels when sub.value == 0).
 double volume(const TetMesh& mesh, SubdomainId sub = SubdomainId{0});
 

@@ -25,18 +25,6 @@ struct Case {
 
 std::ostream& operator<<(std::ostream& o, const Case& c) { return o << c.file; }
 
-std::map<int, int> degrees(const TetMesh& mesh, CurveId curve, std::size_t& count) {
-  std::map<int, int> degree;
-  count = 0;
-  for (std::size_t e = 0; e < mesh.edges.size(); ++e) {
-    if (mesh.edge_curve[e] != curve) continue;
-    ++degree[mesh.edges[e][0]];
-    ++degree[mesh.edges[e][1]];
-    ++count;
-  }
-  return degree;
-}
-
 /// Euler characteristic of each input patch.
 std::map<int, int> input_patch_euler(const TriangleMeshOracle& o) {
   std::map<int, std::vector<std::array<int, 3>>> tris;
@@ -74,7 +62,7 @@ TEST_P(TriangleMeshInputs, MeshedFaithfully) {
   // Curves: one chain each, between its corners; corners are vertices.
   for (const CurveInfo& curve : oracle->curves()) {
     std::size_t count = 0;
-    const std::map<int, int> degree = degrees(mesh, curve.id, count);
+    const std::map<int, int> degree = test::curve_degrees(mesh, curve.id, count);
     ASSERT_GE(count, curve.closed ? 3u : 1u) << curve.name;
     int ends = 0;
     for (const auto& [v, d] : degree) {
