@@ -164,8 +164,9 @@ void check_curve(const DomainOracle& o, const CurveInfo& info, std::mt19937& rng
 
 void check_corner_patches(const DomainOracle& o, const CornerInfo& q) {
   const std::set<int> labels = labels_around_point(o, q.point, 1e-5 * o.bounding_box().diagonal());
+  const std::vector<PatchInfo> patches = o.patches();  // find_patch points into it
   for (PatchId id : q.patches) {
-    const PatchInfo* p = find_patch(o.patches(), id);
+    const PatchInfo* p = find_patch(patches, id);
     EXPECT_NE(p, nullptr) << "corner " << q.id.value << " patch " << id.value << " not listed";
     if (p) EXPECT_TRUE(has_sides(labels, *p)) << "corner " << str(q.point) << " not on " << p->name;
   }
