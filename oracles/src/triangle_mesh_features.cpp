@@ -2,7 +2,8 @@
 // chaining sharp edges between corners (see the header's file comment).
 //
 // The sharp edges form a graph on the mesh vertices. Its vertices of degree
-// other than 2 are corners; walking from each corner along each of its unvisited
+// other than 2, and those where the chain turns by more than the feature angle
+// (a kink), are corners; walking from each corner along each of its unvisited
 // edges, through degree-2 vertices, until the next corner gives the open curves;
 // what is left are loops, the closed curves. A walk that comes back to the corner
 // it started from would be an open curve with equal ends (a closed polyline with
@@ -69,10 +70,18 @@ void TriangleMeshOracle::build_features(const std::vector<std::array<int, 3>>& n
     incident[edges[e].v].push_back(e);
   }
   std::vector<char> is_corner(nv, 0);
+  auto other = [&](int e, int v) { return edges[e].u == v ? edges[e].v : edges[e].u; };
+  // A curve is smooth: where a chain of two sharp edges turns by more than the
+  // feature angle (a kink) it is split, the vertex is a corner.
+  const double kink = std::cos(options_.feature_angle_degrees * std::numbers::pi / 180);
   for (int v = 0; v < nv; ++v) {
     is_corner[v] = !incident[v].empty() && incident[v].size() != 2;
+    if (incident[v].size() != 2) continue;
+    const Point3 p = mesh_.points[v];
+    const Point3 in = p - mesh_.points[other(incident[v][0], v)];
+    const Point3 out = mesh_.points[other(incident[v][1], v)] - p;
+    is_corner[v] = dot(in, out) < kink * norm(in) * norm(out);
   }
-  auto other = [&](int e, int v) { return edges[e].u == v ? edges[e].v : edges[e].u; };
   std::vector<Walk> open, loops;
   for (bool again = true; again;) {
     again = false;

@@ -6,12 +6,13 @@
 
 #include "oracles/oracle_conformance.h"
 #include "rdmesh/errors.h"
+#include "rdmesh/polyline_curve.h"
 #include "rdmesh/triangle_mesh_oracle.h"
+#include "shared_data.h"
 
 namespace rdmesh {
 namespace {
 
-const std::string kData = "/work/shared/data/mesh/";
 
 /// An axis-aligned box as 12 outward triangles.
 TriangleSoup box_soup(Point3 lo, Point3 hi) {
@@ -107,7 +108,8 @@ TEST(TriangleMeshOracle, OpenOrSelfIntersectingInputsAreRejected) {
 }
 
 TEST(TriangleMeshOracle, Fandisk) {
-  const auto o = TriangleMeshOracle::from_file(kData + "cgal_fandisk.off");
+  RDMESH_SHARED_DATA_OR_SKIP(path, "mesh/cgal_fandisk.off");
+  const auto o = TriangleMeshOracle::from_file(path);
   EXPECT_EQ(o->subdomains().size(), 1u);
   EXPECT_GT(o->patches().size(), 10u);
   EXPECT_GT(o->curves().size(), 10u);
@@ -119,13 +121,28 @@ TEST(TriangleMeshOracle, Fandisk) {
     EXPECT_EQ(curve.point(c.t_begin), o->corners()[c.start.value - 1].point);
     EXPECT_EQ(curve.point(c.t_end), o->corners()[c.end.value - 1].point);
   }
+  // Curves are smooth: no polyline vertex inside a curve turns by more than
+  // the feature angle (60 degrees); such kinks are corners.
+  for (const CurveInfo& c : o->curves()) {
+    const auto* polyline = dynamic_cast<const PolylineCurve*>(&o->curve(c.id));
+    ASSERT_NE(polyline, nullptr);
+    const std::vector<Point3>& p = polyline->points();
+    const std::size_t n = p.size();
+    for (std::size_t k = c.closed ? 0 : 1; k + (c.closed ? 0 : 1) < n; ++k) {
+      const Point3 prev = p[(k + n - 1 - (c.closed ? 1 : 0)) % n], next = p[(k + 1) % n];
+      const Point3 in = p[k] - prev, out = next - p[k];
+      if (c.closed && k + 1 == n) break;  // the repeated first point
+      EXPECT_GE(dot(in, out), 0.5 * norm(in) * norm(out)) << c.name << " kinks at vertex " << k;
+    }
+  }
   expect_oracle_conformance(*o);
 }
 
 class SharedMeshes : public testing::TestWithParam<std::string> {};
 
 TEST_P(SharedMeshes, Conformance) {
-  const auto o = TriangleMeshOracle::from_file(kData + GetParam());
+  RDMESH_SHARED_DATA_OR_SKIP(path, "mesh/" + GetParam());
+  const auto o = TriangleMeshOracle::from_file(path);
   EXPECT_GT(o->volume(), 0.0);
   expect_oracle_conformance(*o, 500);
 }

@@ -16,7 +16,8 @@
 // its subdomain and the enclosing one (or kOutside).
 //
 // Curves and corners. Corners are the vertices with a number of sharp edges
-// other than 0 and 2, ids in vertex order. Curves are the chains of sharp edges
+// other than 0 and 2, and the vertices where two sharp edges turn by more than
+// the feature angle (a kink: curves are smooth), ids in vertex order. Curves are the chains of sharp edges
 // between corners (open, in order of their start corner, then of the first
 // edge around it) and the loops of sharp edges without corner (closed, after
 // the open ones, in order of their first vertex); each is a PolylineCurve
