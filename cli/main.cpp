@@ -39,6 +39,7 @@ int run(const rdmesh::cli::Options& opt) {
   MeshOptions mesh_options;
   mesh_options.progress = [&progress](const Progress& p) { progress(p); };
   mesh_options.exudation = cli::exudation_options(opt);
+  mesh_options.features = opt.features;
   MeshResult result = generate_mesh(*input.oracle, criteria, mesh_options);
   progress.finish();
 
@@ -71,6 +72,14 @@ int run(const rdmesh::cli::Options& opt) {
                  "input may violate the angle hypothesis of RR-7912 (features meeting below 90 "
                  "degrees)\n",
                  result.stats.guard_rejections, where.c_str());
+  }
+  if (result.stats.protection_conflicts > 0) {
+    std::string where;
+    for (const std::string& f : result.stats.protection_features) where += (where.empty() ? "" : "; ") + f;
+    std::fprintf(stderr,
+                 "rdmesh: warning: %zu protecting balls could not be made small enough (%s): "
+                 "features closer than the minimum size; the mesh may miss them there\n",
+                 result.stats.protection_conflicts, where.c_str());
   }
   if (result.stats.unmeshed_feature_edges > 0) {
     std::fprintf(stderr, "rdmesh: warning: %zu feature edges are not edges of the mesh\n",

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <map>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -51,6 +52,14 @@ void add_options(CLI::App& app, Options& opt) {
   app.add_flag("-q,--quiet", opt.quiet, "No progress and no summary");
   app.add_flag("--heal", opt.heal,
                "CAD input: run OpenCASCADE shape healing first and report what it changed");
+  app.add_option("--features", opt.features,
+                 "How sharp curves and corners are meshed: 'protect' (protecting balls, any "
+                 "angles; default) or 'refine' (RR-7912's rules R1/R2, needs features meeting at "
+                 ">= 90 degrees)")
+      ->transform(CLI::CheckedTransformer(
+          std::map<std::string, FeatureMethod>{{"protect", FeatureMethod::kProtectingBalls},
+                                               {"refine", FeatureMethod::kRefineEdges}},
+          CLI::ignore_case));
   app.add_option("--feature-angle", opt.feature_angle,
                  "Triangle-mesh input: an edge is a sharp curve when its two triangles' normals "
                  "turn by more than this, degrees (default 60)")
@@ -170,6 +179,12 @@ void write_json_report(const Options& opt, const Criteria& criteria, const Refin
   j["guard"] = {{"fired", stats.guard_fired()},
                 {"rejected_points", stats.guard_rejections},
                 {"features", stats.guard_features}};
+  j["protection"] = {{"balls", stats.protecting_balls},
+                     {"min_ball_radius", stats.min_ball_radius},
+                     {"restarts", stats.protection_restarts},
+                     {"conflicts", stats.protection_conflicts},
+                     {"features", stats.protection_features},
+                     {"seconds", stats.seconds_protect}};
   j["unmeshed_feature_edges"] = stats.unmeshed_feature_edges;
   j["missing_patches"] = nlohmann::json::array();
   for (const PatchId& p : stats.missing_patches) j["missing_patches"].push_back(p.value);
@@ -184,6 +199,7 @@ void write_json_report(const Options& opt, const Criteria& criteria, const Refin
                     {"time_limit_reached", exudation.time_limit_reached},
                     {"seconds", exudation.seconds}};
   j["seconds"] = {{"load", times.load},
+                  {"protect", stats.seconds_protect},
                   {"initial_points", stats.seconds_initial},
                   {"refine", stats.seconds_refine},
                   {"exude", exudation.seconds},
@@ -201,6 +217,13 @@ std::string format_run_summary(const Options& opt, const RefinementStats& stats,
   s << "refinement: " << stats.initial_points << " initial points, "
     << stats.inserted_edge_centers << " edge centers, " << stats.inserted_facet_centers << " facet centers, " << stats.inserted_cell_centers
     << " cell centers, " << stats.encroachments << " encroachments\n";
+  if (stats.protecting_balls > 0) {
+    s.precision(3);
+    s << "protection: " << stats.protecting_balls << " balls, smallest radius "
+      << std::defaultfloat << stats.min_ball_radius << std::fixed << ", " << stats.protection_restarts
+      << " restarts, " << stats.protection_conflicts << " conflicts left\n";
+    s.precision(2);
+  }
   s << "guard: " << (stats.guard_fired() ? "FIRED" : "not fired") << " ("
     << stats.guard_rejections << " points refused)\n";
   if (exudation.ran) {
@@ -213,7 +236,8 @@ std::string format_run_summary(const Options& opt, const RefinementStats& stats,
   } else {
     s << "exudation: off\n";
   }
-  s << "time: load " << times.load << " s, refine " << stats.seconds_initial + stats.seconds_refine
+  s << "time: load " << times.load << " s, protect " << stats.seconds_protect << " s, refine "
+    << stats.seconds_initial + stats.seconds_refine
     << " s, exude " << exudation.seconds << " s, extract " << stats.seconds_extract << " s, write " << times.write << " s, report "
     << times.report << " s\n";
   s << "wrote " << opt.output << (opt.report.empty() ? "" : " and " + opt.report) << '\n';

@@ -28,6 +28,7 @@ struct Options {
   bool quiet = false;
   bool heal = false;  ///< --heal: OpenCASCADE shape healing of CAD input
   double feature_angle = 60;  ///< --feature-angle DEG: sharp-edge threshold of triangle-mesh input
+  FeatureMethod features = FeatureMethod::kProtectingBalls;  ///< --features protect|refine
 };
 
 void add_options(CLI::App& app, Options& opt);

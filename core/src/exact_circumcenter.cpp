@@ -1,5 +1,5 @@
-// Exact circumcenters for nearly flat tetrahedra, where the double formula of
-// simplex_geometry.h loses its digits. Kept in its own translation unit: the
+// Exact circumcenters (and orthocenters of weighted points) for nearly flat
+// tetrahedra, where the double formulas of simplex_geometry.h lose their digits. Kept in its own translation unit: the
 // exact kernel is slow to compile and only rarely called.
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
@@ -16,6 +16,17 @@ Point3 exact_tet_circumcenter(Point3 a, Point3 b, Point3 c, Point3 d) {
   }
   const EK::Point_3 center = CGAL::circumcenter(p(a), p(b), p(c), p(d));
   return {CGAL::to_double(center.x()), CGAL::to_double(center.y()), CGAL::to_double(center.z())};
+}
+
+Point3 exact_tet_orthocenter(const std::array<Point3, 4>& p, const std::array<double, 4>& w) {
+  using EK = CGAL::Exact_predicates_exact_constructions_kernel;
+  const auto wp = [&](int i) { return EK::Weighted_point_3(EK::Point_3(p[i].x, p[i].y, p[i].z), w[i]); };
+  if (CGAL::coplanar(wp(0).point(), wp(1).point(), wp(2).point(), wp(3).point())) {
+    const double inf = std::numeric_limits<double>::infinity();
+    return {inf, inf, inf};
+  }
+  const EK::Point_3 z = CGAL::weighted_circumcenter(wp(0), wp(1), wp(2), wp(3));
+  return {CGAL::to_double(z.x()), CGAL::to_double(z.y()), CGAL::to_double(z.z())};
 }
 
 }  // namespace rdmesh::detail

@@ -1,6 +1,8 @@
 #include "rdmesh/mesher.h"
 
 #include <chrono>
+#include <memory>
+#include <optional>
 #include <set>
 #include <string>
 
@@ -30,28 +32,84 @@ void check_output(const DomainOracle& oracle, MeshResult& result) {
   }
 }
 
+/// The protecting-ball planner for the oracle's curves and corners.
+detail::ProtectionPlanner make_planner(const DomainOracle& oracle, const Criteria& criteria) {
+  std::vector<detail::ProtectedCurve> curves;
+  for (const CurveInfo& info : oracle.curves()) curves.push_back({info, &oracle.curve(info.id)});
+  const double min_size =
+      criteria.min_size > 0 ? criteria.min_size : 1e-4 * oracle.bounding_box().diagonal();
+  return detail::ProtectionPlanner(std::move(curves), oracle.corners(), criteria, min_size);
+}
+
+void record_protection(const detail::ProtectionPlan& plan,
+                       const std::vector<detail::BallRef>& conflicts, RefinementStats& stats) {
+  stats.protecting_balls = plan.balls;
+  stats.min_ball_radius = plan.min_radius;
+  stats.protection_conflicts = plan.unresolved_pairs + conflicts.size();
+  stats.protection_features = plan.unresolved;
+  for (const detail::BallRef& b : conflicts) {
+    if (stats.protection_features.size() >= 20) break;
+    stats.protection_features.push_back(
+        (b.curve < 0 ? "corner " + std::to_string(b.corner + 1)
+                     : "curve " + std::to_string(b.curve + 1)) +
+        " reaches a patch it does not bound");
+  }
+}
+
 }  // namespace
 
 MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& criteria,
                          const MeshOptions& options) {
   criteria.validate();
-  detail::Refiner refiner(oracle, criteria, options);
+  const bool protect = options.features == FeatureMethod::kProtectingBalls &&
+                       !(oracle.curves().empty() && oracle.corners().empty());
   auto t = std::chrono::steady_clock::now();
-  refiner.insert_initial_points();
-  const double initial = seconds_since(t);
-
-  t = std::chrono::steady_clock::now();
-  refiner.refine();
-  const double refine = seconds_since(t);
+  std::optional<detail::ProtectionPlanner> planner;
+  detail::ProtectionPlan plan;
+  if (protect) {
+    planner.emplace(make_planner(oracle, criteria));
+    plan = planner->plan();
+  }
+  double protect_seconds = seconds_since(t);
+  // A ball found reaching into a patch its feature does not bound is shrunk
+  // and refinement starts again (it stops early, once the surface rules are
+  // done, so a restart costs little); after the last restart the conflict is
+  // reported instead.
+  constexpr int kMaxRestarts = 6;
+  std::unique_ptr<detail::Refiner> refiner;
+  double initial = 0, refine = 0;
+  int restarts = 0;
+  for (;; ++restarts) {
+    refiner = std::make_unique<detail::Refiner>(oracle, criteria, options,
+                                                protect ? &plan : nullptr);
+    t = std::chrono::steady_clock::now();
+    refiner->insert_initial_points();
+    initial += seconds_since(t);
+    t = std::chrono::steady_clock::now();
+    const bool may_restart = protect && restarts < kMaxRestarts;
+    refiner->refine(may_restart);
+    refine += seconds_since(t);
+    if (!may_restart || refiner->conflicts().empty()) break;
+    t = std::chrono::steady_clock::now();
+    plan = planner->shrink(refiner->conflicts());
+    protect_seconds += seconds_since(t);
+  }
 
   MeshResult result;
   if (options.exudation.enabled) {
-    result.exudation = detail::exude_slivers(refiner.triangulation(), criteria, options.exudation);
+    const detail::ChainEdges chains = refiner->chain_edges();
+    result.exudation =
+        detail::exude_slivers(refiner->triangulation(), criteria, options.exudation, &chains);
   }
 
   t = std::chrono::steady_clock::now();
-  result.mesh = refiner.extract_mesh();
-  result.stats = refiner.stats();
+  result.mesh = refiner->extract_mesh();
+  result.stats = refiner->stats();
+  if (protect) {
+    record_protection(plan, refiner->conflicts(), result.stats);
+    result.stats.protection_restarts = restarts;
+  }
+  result.stats.seconds_protect = protect_seconds;
   result.stats.seconds_initial = initial;
   result.stats.seconds_refine = refine;
   result.stats.seconds_extract = seconds_since(t);

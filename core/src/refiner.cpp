@@ -16,8 +16,9 @@
 
 namespace rdmesh::detail {
 
-Refiner::Refiner(const DomainOracle& oracle, const Criteria& criteria, const MeshOptions& options)
-    : oracle_(oracle), criteria_(criteria), options_(options) {
+Refiner::Refiner(const DomainOracle& oracle, const Criteria& criteria, const MeshOptions& options,
+                 const ProtectionPlan* plan)
+    : oracle_(oracle), criteria_(criteria), options_(options), plan_(plan) {
   const Box3 box = oracle_.bounding_box();
   const double margin = 0.05 * box.diagonal();
   clip_box_ = {box.lo - Point3{margin, margin, margin}, box.hi + Point3{margin, margin, margin}};
@@ -34,19 +35,28 @@ Refiner::Refiner(const DomainOracle& oracle, const Criteria& criteria, const Mes
 }
 
 void Refiner::insert_initial_points() {
-  insert_corners_and_curve_samples();
+  if (plan_) {
+    insert_protecting_balls();
+  } else {
+    insert_corners_and_curve_samples();
+  }
   Cell_handle hint;
   for (const PatchInfo& patch : oracle_.patches()) {
     for (const Point3& p : oracle_.initial_points(patch.id)) {
-      // A patch point close to a curve would sit in the balls of its restricted
-      // edges and force tiny arcs; the curve samples cover that area instead.
-      bool near_curve = false;
-      for (const CurveState& c : curves_) {
-        const double t = c.curve->closest(p, c.info.t_begin, c.info.t_end);
-        const double keep_out = 0.25 * criteria_.edge_size(p);
-        near_curve = near_curve || squared_norm(c.curve->point(t) - p) < keep_out * keep_out;
+      if (plan_) {
+        // Nothing is ever inserted inside a protecting ball.
+        if (!outside_balls(p, hint)) continue;
+      } else {
+        // A patch point close to a curve would sit in the balls of its restricted
+        // edges and force tiny arcs; the curve samples cover that area instead.
+        bool near_curve = false;
+        for (const CurveState& c : curves_) {
+          const double t = c.curve->closest(p, c.info.t_begin, c.info.t_end);
+          const double keep_out = 0.25 * criteria_.edge_size(p);
+          near_curve = near_curve || squared_norm(c.curve->point(t) - p) < keep_out * keep_out;
+        }
+        if (near_curve) continue;
       }
-      if (near_curve) continue;
       const Vertex_handle v = tr_.insert(to_weighted(p), hint);
       if (v == Vertex_handle() || v->info().dim != FeatureDim::kVolume) continue;  // a duplicate
       v->info().dim = FeatureDim::kPatch;
@@ -68,13 +78,14 @@ void Refiner::insert_initial_points() {
     const double badness = cell_badness(c);
     if (badness > 0) cell_queue_.push({badness, c->info().stamp, c, -1});
   }
+  if (plan_) return;  // the balls are D|L already: no arc is ever refined
   for (std::size_t j = 0; j < curves_.size(); ++j) {
     CurveState& c = curves_[j];
     for (auto a = c.samples.begin(); c.has_next(a); ++a) create_arc(static_cast<int>(j), a, true);
   }
 }
 
-void Refiner::refine() {
+void Refiner::refine(bool stop_on_conflict) {
   for (;;) {
     if (!arc_queue_.empty()) {
       const ArcEntry e = arc_queue_.top();
@@ -89,6 +100,7 @@ void Refiner::refine() {
       if (stale(e) || facet_badness(e.cell, e.facet) <= 0) continue;
       refine_facet_or_edge(e.cell, e.facet);
     } else if (!cell_queue_.empty()) {
+      if (stop_on_conflict && !conflicts_.empty()) break;  // the caller shrinks the balls
       const QueueEntry e = cell_queue_.top();
       cell_queue_.pop();
       if (stale(e) || cell_badness(e.cell) <= 0) continue;
@@ -133,13 +145,21 @@ bool Refiner::refine_facet_or_edge(Cell_handle c, int i) {
   Cell_handle start = c;
   if (tr_.side_of_power_sphere(start, p) != CGAL::ON_BOUNDED_SIDE) start = c->neighbor(i);
   const VertexInfo info{FeatureDim::kPatch, c->info().facet_patch[i], 0, -1};
+  if (plan_) {
+    // A ball reaching into a patch its feature does not bound: R3 cannot be
+    // met there until the ball shrinks. Other facets whose surface ball has no
+    // positive radius lie inside the balls: protected, not refined.
+    if (ball_conflict(c, i) || !(facet_power(c, i, center) > 0)) return false;
+  }
   if (!find_conflict_zone(p, start)) {
     record_guard(info, c->vertex((i + 1) & 3)->info());  // the center coincides with a vertex
     return false;
   }
-  if (const auto arc = encroached_arc(center)) {
-    ++stats_.encroachments;
-    return refine_edge(arc->first, arc->second);
+  if (!plan_) {
+    if (const auto arc = encroached_arc(center)) {
+      ++stats_.encroachments;
+      return refine_edge(arc->first, arc->second);
+    }
   }
   if (insert_in_zone(p, info) == Vertex_handle()) return false;
   ++stats_.inserted_facet_centers;
@@ -149,10 +169,12 @@ bool Refiner::refine_facet_or_edge(Cell_handle c, int i) {
 bool Refiner::refine_tet_facet_or_edge(const QueueEntry& entry) {
   const Cell_handle c = entry.cell;
   const Point3 center = c->info().circumcenter;
+  // An orthosphere of non-positive radius lies inside the protecting balls.
+  if (plan_ && !(c->info().squared_radius > 0)) return false;
   const Weighted_point p = to_weighted(center);
   if (!find_conflict_zone(p, c)) return false;
   bool redirected = false, inserted = false;
-  if (const auto arc = encroached_arc(center)) {
+  if (const auto arc = plan_ ? std::nullopt : encroached_arc(center)) {
     redirected = true;
     inserted = refine_edge(arc->first, arc->second);
   } else {
@@ -181,7 +203,7 @@ bool Refiner::encroached_facet(const Point3& x, Cell_handle& cell, int& facet) c
     for (int i = 0; i < 4; ++i) {
       if (z->info().facet_patch[i] == 0) continue;
       const Point3 sc = z->info().surface_center[i];
-      const double r2 = squared_norm(to_point3(z->vertex((i + 1) & 3)->point()) - sc);
+      const double r2 = facet_power(z, i, sc);
       if (squared_norm(x - sc) < r2 && r2 > best) {
         cell = z;
         facet = i;
@@ -198,6 +220,7 @@ bool Refiner::find_conflict_zone(const Weighted_point& p, Cell_handle start) {
   zone_boundary_.clear();
   zone_feature_vertices_.clear();
   tr_.find_conflicts(p, start, std::back_inserter(zone_boundary_), std::back_inserter(zone_cells_));
+  if (plan_) return !zone_cells_.empty();  // no arc to check for encroachment
   for (const Cell_handle& z : zone_cells_) {
     for (int k = 0; k < 4; ++k) {
       const Vertex_handle v = z->vertex(k);
@@ -229,7 +252,7 @@ Vertex_handle Refiner::insert_in_zone(const Weighted_point& p, const VertexInfo&
       tr_.insert_in_hole(p, zone_cells_.begin(), zone_cells_.end(), f.first, f.second);
   v->info() = info;
   after_insertion(v);
-  recheck_arcs_after(v);
+  if (!plan_) recheck_arcs_after(v);
   return v;
 }
 

@@ -21,6 +21,8 @@
 #include "rdmesh/criteria.h"
 #include "rdmesh/mesher.h"
 #include "rdmesh/oracle.h"
+#include "optimize/chain_edges.h"
+#include "protection.h"
 #include "restricted_curves.h"
 #include "triangulation_types.h"
 
@@ -28,17 +30,29 @@ namespace rdmesh::detail {
 
 class Refiner {
  public:
-  Refiner(const DomainOracle& oracle, const Criteria& criteria, const MeshOptions& options);
+  /// `plan`: the protecting balls (FeatureMethod::kProtectingBalls), or null
+  /// for RR-7912's rules R1/R2 on the curves. The plan must outlive the refiner.
+  Refiner(const DomainOracle& oracle, const Criteria& criteria, const MeshOptions& options,
+          const ProtectionPlan* plan);
 
-  /// P_0: the corners Q, then samples on every curve (at least two per curve,
-  /// corners included), then at least three points on every connected patch.
+  /// P_0: the corners Q, then samples on every curve (the protecting balls, or
+  /// at least two points per curve, corners included), then at least three
+  /// points on every connected patch (outside the balls).
   void insert_initial_points();
   /// Applies R1-R5 until no rule applies (or only guarded elements remain).
-  void refine();
+  /// With `stop_on_conflict`, returns as soon as the surface rules are done
+  /// (the facet queue is empty) if a protecting ball was found reaching into
+  /// a patch its feature does not bound (see conflicts()).
+  void refine(bool stop_on_conflict = false);
+  /// Balls that reached into a patch their feature does not bound (R3 could
+  /// not be met there): shrinking them and refining again removes the conflict.
+  const std::vector<BallRef>& conflicts() const { return conflicts_; }
   /// The tetrahedra of D|O, the triangles of D|S and the edges of D|L, labelled.
   TetMesh extract_mesh();
 
   const RefinementStats& stats() const { return stats_; }
+  /// The edges of D|L: consecutive samples of every curve.
+  ChainEdges chain_edges() const;
   const Triangulation& triangulation() const { return tr_; }
   /// Mutable access for the optimizers that run after refine() (core/src/optimize/).
   Triangulation& triangulation() { return tr_; }
@@ -82,10 +96,21 @@ class Refiner {
   double cell_badness(Cell_handle c) const;
   /// Whether vertex v lies on patch `patch` (on it, or on a curve/corner bounding it).
   bool on_patch(const VertexInfo& v, int patch) const;
+  /// The power |x - p|^2 - w of x with respect to the facet's first vertex:
+  /// the squared radius of the surface Delaunay ball centred at x.
+  double facet_power(Cell_handle c, int i, const Point3& x) const;
+  /// Protecting balls: a weighted vertex of the R3-violating facet (c, i) whose
+  /// feature does not bound the facet's patch and whose ball reaches its
+  /// surface centre; records it in conflicts_.
+  bool ball_conflict(Cell_handle c, int i);
 
   // --- D|L bookkeeping (restricted_curves.cpp) ---
   void load_curves();
   void insert_corners_and_curve_samples();
+  /// Protecting balls: the plan's corners and curve samples as weighted points.
+  void insert_protecting_balls();
+  /// A point that may be inserted: outside every protecting ball.
+  bool outside_balls(const Point3& p, Cell_handle hint) const;
   /// Computes the restricted Delaunay ball of the arc starting at `a` and queues it if bad.
   void create_arc(int curve, CurveState::Arc a, bool check_empty);
   /// Badness of an arc (> 0 when R1 or R2 applies).
@@ -123,6 +148,8 @@ class Refiner {
   const DomainOracle& oracle_;
   Criteria criteria_;
   MeshOptions options_;
+  const ProtectionPlan* plan_;  ///< null: RR-7912's R1/R2 on the curves
+  std::vector<BallRef> conflicts_;
   Box3 clip_box_;              ///< oracle box with a margin: rays are clipped to it
   double min_size_sq_;         ///< termination guard (squared)
   double facet_shape_bound_;   ///< 4 sin^2(facet angle): min edge^2 / R^2 below it is bad

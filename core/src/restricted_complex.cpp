@@ -6,6 +6,7 @@
 //    crosses the boundary when their labels differ; the crossing point, found
 //    by the oracle, is the center of the facet's surface Delaunay ball.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -22,47 +23,85 @@ void Refiner::init_cell(Cell_handle c) {
     info.label = kOutside.value;
     return;
   }
-  const Point3 p0 = to_point3(c->vertex(0)->point());
-  info.circumcenter = tet_circumcenter(p0, to_point3(c->vertex(1)->point()),
-                                       to_point3(c->vertex(2)->point()),
-                                       to_point3(c->vertex(3)->point()));
-  info.squared_radius = squared_norm(info.circumcenter - p0);
+  // The orthosphere (the circumsphere when no vertex carries a protecting
+  // ball): its center is the cell's dual Voronoi vertex, its squared radius
+  // the power of that center (negative inside overlapping balls).
+  std::array<Point3, 4> p;
+  std::array<double, 4> w;
+  for (int k = 0; k < 4; ++k) {
+    p[k] = to_point3(c->vertex(k)->point());
+    w[k] = c->vertex(k)->point().weight();
+  }
+  info.circumcenter = tet_orthocenter(p, w);
+  info.squared_radius = squared_norm(info.circumcenter - p[0]) - w[0];
   const bool finite_center = std::isfinite(info.circumcenter.x) &&
                              std::isfinite(info.circumcenter.y) &&
                              std::isfinite(info.circumcenter.z);
   info.label = finite_center ? oracle_.locate(info.circumcenter).value : kOutside.value;
 }
 
+namespace {
+
+/// The range of t for which o + t d lies in `box` (slabs); false when the line
+/// misses the box.
+bool line_in_box(const Point3& o, const Point3& d, const Box3& box, double& t0, double& t1) {
+  t0 = -std::numeric_limits<double>::infinity();
+  t1 = std::numeric_limits<double>::infinity();
+  const double p[3] = {o.x, o.y, o.z}, v[3] = {d.x, d.y, d.z};
+  const double lo[3] = {box.lo.x, box.lo.y, box.lo.z}, hi[3] = {box.hi.x, box.hi.y, box.hi.z};
+  for (int k = 0; k < 3; ++k) {
+    if (v[k] == 0) {
+      if (p[k] < lo[k] || p[k] > hi[k]) return false;
+      continue;
+    }
+    double ta = (lo[k] - p[k]) / v[k], tb = (hi[k] - p[k]) / v[k];
+    if (ta > tb) std::swap(ta, tb);
+    t0 = std::max(t0, ta);
+    t1 = std::min(t1, tb);
+  }
+  return t0 <= t1;
+}
+
+}  // namespace
+
 bool Refiner::dual_segment(Cell_handle c, int i, Point3& a, Point3& b) const {
+  // The dual of facet (c, i) lies on the line through the facet's orthocenter
+  // perpendicular to it, between the orthocenters of its two cells (or from the
+  // finite one to infinity for a hull facet). Parametrizing that line from the
+  // facet's own orthocenter keeps every digit even when a nearly flat cell's
+  // center is 1e16 away; beyond the clip box the domain is empty, so only the
+  // part inside it goes to the oracle.
+  const Vertex_handle v[3] = {c->vertex((i + 1) & 3), c->vertex((i + 2) & 3),
+                              c->vertex((i + 3) & 3)};
+  const Point3 q[3] = {to_point3(v[0]->point()), to_point3(v[1]->point()), to_point3(v[2]->point())};
+  const double w[3] = {v[0]->point().weight(), v[1]->point().weight(), v[2]->point().weight()};
+  Point3 normal = cross(q[1] - q[0], q[2] - q[0]);
+  const double len = norm(normal);
+  if (!(len > 0)) return false;
+  normal = (1 / len) * normal;
+  const Point3 origin = (w[0] == 0 && w[1] == 0 && w[2] == 0)
+                            ? triangle_circumcenter(q[0], q[1], q[2])
+                            : triangle_orthocenter(q[0], w[0], q[1], w[1], q[2], w[2]);
+  if (!std::isfinite(origin.x + origin.y + origin.z)) return false;
+  // A cell's end of the edge: its center's coordinate along the line, or an
+  // infinite one (away from the cell's opposite vertex) for the infinite cell.
+  auto end_of = [&](Cell_handle cell, Cell_handle other) {
+    if (tr_.is_infinite(cell)) {
+      const Point3 opposite = to_point3(other->vertex(other->index(cell))->point());
+      return dot(normal, opposite - q[0]) > 0 ? -std::numeric_limits<double>::infinity()
+                                              : std::numeric_limits<double>::infinity();
+    }
+    return dot(cell->info().circumcenter - origin, normal);
+  };
   const Cell_handle n = c->neighbor(i);
-  if (!tr_.is_infinite(c) && !tr_.is_infinite(n)) {
-    a = c->info().circumcenter;
-    b = n->info().circumcenter;
-    return true;
-  }
-  // A hull facet: its dual is the ray from the finite cell's circumcenter,
-  // perpendicular to the facet, away from the finite cell.
-  const Cell_handle f = tr_.is_infinite(c) ? n : c;
-  const int k = tr_.is_infinite(c) ? n->index(c) : i;
-  const Point3 q0 = to_point3(f->vertex((k + 1) & 3)->point());
-  const Point3 q1 = to_point3(f->vertex((k + 2) & 3)->point());
-  const Point3 q2 = to_point3(f->vertex((k + 3) & 3)->point());
-  Point3 dir = cross(q1 - q0, q2 - q0);
-  if (dot(dir, to_point3(f->vertex(k)->point()) - q0) > 0) dir = -1.0 * dir;
-  const Point3 origin = f->info().circumcenter;
-  // Slab clipping: the parameter where the ray leaves the clip box.
-  double t_exit = std::numeric_limits<double>::infinity();
-  const double o[3] = {origin.x, origin.y, origin.z};
-  const double d[3] = {dir.x, dir.y, dir.z};
-  const double lo[3] = {clip_box_.lo.x, clip_box_.lo.y, clip_box_.lo.z};
-  const double hi[3] = {clip_box_.hi.x, clip_box_.hi.y, clip_box_.hi.z};
-  for (int axis = 0; axis < 3; ++axis) {
-    if (d[axis] > 0) t_exit = std::min(t_exit, (hi[axis] - o[axis]) / d[axis]);
-    if (d[axis] < 0) t_exit = std::min(t_exit, (lo[axis] - o[axis]) / d[axis]);
-  }
-  if (!(t_exit > 0) || !std::isfinite(t_exit)) return false;
-  a = origin;
-  b = origin + t_exit * dir;
+  const double sc = end_of(c, n), sn = end_of(n, c);
+  if (std::isnan(sc) || std::isnan(sn)) return false;  // a flat cell without a center
+  double t0, t1;
+  if (!line_in_box(origin, normal, clip_box_, t0, t1)) return false;
+  const double lo = std::max(std::min(sc, sn), t0), hi = std::min(std::max(sc, sn), t1);
+  if (!(lo <= hi)) return false;
+  a = origin + (sc <= sn ? lo : hi) * normal;
+  b = origin + (sc <= sn ? hi : lo) * normal;
   return true;
 }
 
@@ -100,21 +139,67 @@ double Refiner::facet_badness(Cell_handle c, int i) const {
   const Point3 center = c->info().surface_center[i];
   double badness = 0.0;
   // R4.1: surface Delaunay ball radius against the sizing field.
-  const double r2 = squared_norm(p[0] - center);
+  const double r2 = facet_power(c, i, center);
   const double sigma = criteria_.facet_size(center);
   if (r2 > sigma * sigma) badness = std::max(badness, r2 / (sigma * sigma));
-  // R4.2: shape, as a minimum angle: min edge^2 >= 4 sin^2(angle) R_triangle^2.
+  // R4.2: shape, as a minimum angle: min edge^2 >= 4 sin^2(angle) R^2, with R
+  // the triangle's circumradius. Next to a protecting ball (a weighted vertex)
+  // R is the surface ball's radius instead, as in the paper's R4.2: its center,
+  // the refinement point, is then at least R from every unweighted vertex, so
+  // refining a bad facet never inserts a point closer than its shortest edge.
+  const double w[3] = {v[0]->point().weight(), v[1]->point().weight(), v[2]->point().weight()};
+  const bool weighted = w[0] != 0 || w[1] != 0 || w[2] != 0;
   const Point3 tc = triangle_circumcenter(p[0], p[1], p[2]);
-  const double tri_r2 = squared_norm(p[0] - tc);
+  const double shape_r2 = weighted ? r2 : squared_norm(p[0] - tc);
   const double e2 = min_squared_edge(p[0], p[1], p[2]);
-  if (!(e2 >= facet_shape_bound_ * tri_r2)) {
-    badness = std::max(badness, e2 > 0 ? facet_shape_bound_ * tri_r2 / e2 : 1e200);
+  if (!(e2 >= facet_shape_bound_ * shape_r2)) {
+    badness = std::max(badness, e2 > 0 ? facet_shape_bound_ * shape_r2 / e2 : 1e200);
   }
-  // Approximation: the facet's circumcenter is close to its ball center on the patch.
-  const double d2 = squared_norm(tc - center);
+  // Approximation: the ball center on the patch is close to the facet's plane
+  // (its distance to the facet's orthocenter, the foot of the dual edge; the
+  // circumcenter when no vertex is weighted).
+  const Point3 oc = weighted ? triangle_orthocenter(p[0], w[0], p[1], w[1], p[2], w[2]) : tc;
+  const double d2 = squared_norm(oc - center);
   const double dmax2 = criteria_.facet_distance * criteria_.facet_distance;
   if (!(d2 <= dmax2)) badness = std::max(badness, std::isfinite(d2) ? d2 / dmax2 : 1e200);
   return badness;
+}
+
+double Refiner::facet_power(Cell_handle c, int i, const Point3& x) const {
+  const Weighted_point& q = c->vertex((i + 1) & 3)->point();
+  return squared_norm(x - to_point3(q)) - q.weight();
+}
+
+bool Refiner::ball_conflict(Cell_handle c, int i) {
+  const int patch = c->info().facet_patch[i];
+  const Point3 center = c->info().surface_center[i];
+  for (int k = 1; k < 4; ++k) {
+    const Vertex_handle v = c->vertex((i + k) & 3);
+    const double w = v->point().weight();
+    if (w == 0 || on_patch(v->info(), patch)) continue;
+    // The surface center is on the sphere of the facet's orthoball, so it lies
+    // near or in this ball only when the ball reaches the patch (an early,
+    // coarse facet far from the ball is refined as usual).
+    if (squared_norm(center - to_point3(v->point())) > 1.5 * w) continue;
+    const VertexInfo& info = v->info();
+    BallRef ref;
+    if (info.dim == FeatureDim::kCorner) {
+      ref.corner = info.feature - 1;
+    } else {
+      const std::vector<BallSample>& s = plan_->curves[info.feature - 1].samples;
+      const auto it = std::lower_bound(s.begin(), s.end(), info.t,
+                                       [](const BallSample& b, double t) { return b.t < t; });
+      ref.curve = info.feature - 1;
+      ref.index = static_cast<int>(it - s.begin());
+    }
+    if (std::none_of(conflicts_.begin(), conflicts_.end(), [&](const BallRef& b) {
+          return b.curve == ref.curve && b.index == ref.index && b.corner == ref.corner;
+        })) {
+      conflicts_.push_back(ref);
+    }
+    return true;
+  }
+  return false;
 }
 
 bool Refiner::on_patch(const VertexInfo& v, int patch) const {

@@ -93,6 +93,76 @@ void Refiner::insert_corners_and_curve_samples() {
   }
 }
 
+void Refiner::insert_protecting_balls() {
+  Cell_handle hint;
+  std::size_t inserted = 0;
+  auto insert = [&](const Point3& p, double radius, FeatureDim dim, int feature, double t) {
+    const Vertex_handle v =
+        tr_.insert(Weighted_point(Kernel::Point_3(p.x, p.y, p.z), radius * radius), hint);
+    if (v == Vertex_handle() || v->info().dim != FeatureDim::kVolume) {
+      throw InternalError("protecting ball at (" + std::to_string(p.x) + ", " +
+                          std::to_string(p.y) + ", " + std::to_string(p.z) +
+                          ") is hidden by another or coincides with it");
+    }
+    v->info().dim = dim;
+    v->info().feature = feature;
+    v->info().t = t;
+    v->info().ball_weight = radius * radius;
+    hint = v->cell();
+    ++inserted;
+    return v;
+  };
+  std::vector<Vertex_handle> corner_vertex(corners_.size());
+  for (std::size_t q = 0; q < corners_.size(); ++q) {
+    corner_vertex[q] = insert(corners_[q].point, plan_->corner_radius[q], FeatureDim::kCorner,
+                              static_cast<int>(q) + 1, 0);
+  }
+  for (std::size_t j = 0; j < curves_.size(); ++j) {
+    CurveState& c = curves_[j];
+    const std::vector<BallSample>& balls = plan_->curves[j].samples;
+    const int id = static_cast<int>(j) + 1;
+    Vertex_handle first;
+    for (std::size_t i = 0; i < balls.size(); ++i) {
+      const BallSample& b = balls[i];
+      Vertex_handle v;
+      if (i == 0) {
+        v = first = c.info.closed ? insert(b.point, b.radius, FeatureDim::kCurve, id, b.t)
+                                  : corner_vertex[c.info.start.value - 1];
+      } else if (i + 1 == balls.size()) {
+        v = c.info.closed ? first : corner_vertex[c.info.end.value - 1];
+      } else {
+        v = insert(b.point, b.radius, FeatureDim::kCurve, id, b.t);
+      }
+      c.samples[b.t] = CurveSample{v, to_point3(v->point())};
+    }
+  }
+  // A vertex hidden by a later ball would vanish from the triangulation.
+  if (tr_.number_of_vertices() != inserted) {
+    throw InternalError("protecting balls hide one another (" + std::to_string(inserted) +
+                        " inserted, " + std::to_string(tr_.number_of_vertices()) + " remain)");
+  }
+  stats_.initial_points += inserted;
+}
+
+ChainEdges Refiner::chain_edges() const {
+  ChainEdges chains;
+  for (const CurveState& c : curves_) {
+    for (auto a = c.samples.begin(); std::next(a) != c.samples.end(); ++a) {
+      chains.add(a->second.vertex, std::next(a)->second.vertex);
+    }
+  }
+  chains.finish();
+  return chains;
+}
+
+bool Refiner::outside_balls(const Point3& p, Cell_handle hint) const {
+  if (tr_.number_of_vertices() == 0) return true;
+  const Kernel::Point_3 x(p.x, p.y, p.z);
+  const Vertex_handle v = tr_.nearest_power_vertex(x, hint);
+  if (v == Vertex_handle()) return true;
+  return squared_norm(p - to_point3(v->point())) - v->point().weight() > 0;
+}
+
 void Refiner::create_arc(int curve, CurveState::Arc a, bool check_empty) {
   CurveState& c = curves_[curve];
   const auto b = std::next(a);

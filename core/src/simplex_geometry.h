@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <limits>
 
 #include "rdmesh/geometry.h"
@@ -26,6 +27,37 @@ inline Point3 tet_circumcenter(Point3 a, Point3 b, Point3 c, Point3 d) {
   if (det * det <= 1e-12 * uu * vv * ww) return exact_tet_circumcenter(a, b, c, d);
   const Point3 num = uu * vw + vv * wu + ww * uv;
   return a + (0.5 / det) * num;
+}
+
+/// Exact orthocenter (weighted circumcenter) of weighted tetrahedron abcd,
+/// rounded (exact_circumcenter.cpp); infinite coordinates for a flat tetrahedron.
+Point3 exact_tet_orthocenter(const std::array<Point3, 4>& p, const std::array<double, 4>& w);
+
+/// Orthocenter of tetrahedron p with weights w: the point of equal power
+/// |z - p_i|^2 - w_i to its four vertices (the circumcenter when all weights
+/// are zero). Same stability rule as tet_circumcenter.
+inline Point3 tet_orthocenter(const std::array<Point3, 4>& p, const std::array<double, 4>& w) {
+  if (w[0] == 0 && w[1] == 0 && w[2] == 0 && w[3] == 0) {
+    return tet_circumcenter(p[0], p[1], p[2], p[3]);
+  }
+  const Point3 u = p[1] - p[0], v = p[2] - p[0], x = p[3] - p[0];
+  const double uu = squared_norm(u), vv = squared_norm(v), xx = squared_norm(x);
+  const Point3 vx = cross(v, x), xu = cross(x, u), uv = cross(u, v);
+  const double det = dot(u, vx);
+  if (det * det <= 1e-12 * uu * vv * xx) return exact_tet_orthocenter(p, w);
+  const double b0 = uu - w[1] + w[0], b1 = vv - w[2] + w[0], b2 = xx - w[3] + w[0];
+  return p[0] + (0.5 / det) * (b0 * vx + b1 * xu + b2 * uv);
+}
+
+/// Orthocenter of triangle abc with weights wa, wb, wc, in its plane: the
+/// foot of the triangle's dual power line (its circumcenter for zero weights).
+inline Point3 triangle_orthocenter(Point3 a, double wa, Point3 b, double wb, Point3 c, double wc) {
+  const Point3 u = b - a, v = c - a;
+  const double uu = squared_norm(u), uv = dot(u, v), vv = squared_norm(v);
+  const double bu = 0.5 * (uu - wb + wa), bv = 0.5 * (vv - wc + wa);
+  const double det = uu * vv - uv * uv;
+  const double alpha = (bu * vv - bv * uv) / det, beta = (bv * uu - bu * uv) / det;
+  return a + alpha * u + beta * v;
 }
 
 /// Circumcenter of triangle abc (in its plane).

@@ -28,6 +28,7 @@ struct VertexInfo {
   int feature = 0;  ///< CornerId / CurveId / PatchId value for dim 0 / 1 / 2
   double t = 0.0;   ///< curve parameter when dim == kCurve
   int index = -1;   ///< scratch: output index during extraction
+  double ball_weight = 0.0;  ///< squared radius of its protecting ball (0: none)
 };
 
 /// Per cell: its Delaunay ball, its label in D|O, and the restricted status

@@ -1,5 +1,5 @@
-// Refinement with sharp curves (RR-7912 rules R1, R2 and the encroachment
-// cascade), checked against the output properties of section 4: each curve's
+// Refinement with sharp curves (protecting balls, and RR-7912's rules R1, R2
+// with the encroachment cascade), checked against the output properties of section 4: each curve's
 // restricted edges form one chain of consecutive samples, each patch's facets
 // form a surface of the right Euler characteristic, the boundary is closed.
 #include <gtest/gtest.h>
@@ -50,10 +50,14 @@ void expect_edges_in_mesh(const TetMesh& mesh) {
   for (const auto& e : mesh.edges) EXPECT_TRUE(tet_edges.count(std::minmax(e[0], e[1])));
 }
 
-TEST(SharpFeatures, CappedCylinderHasThreePatchesAndTwoClosedChains) {
+class SharpFeatures : public testing::TestWithParam<FeatureMethod> {};
+
+TEST_P(SharpFeatures, CappedCylinderHasThreePatchesAndTwoClosedChains) {
   const test::CappedCylinderOracle oracle(0.5, 0.5);
   const Criteria criteria = test::uniform_criteria(0.1);
-  const MeshResult result = generate_mesh(oracle, criteria);
+  MeshOptions options;
+  options.features = GetParam();
+  const MeshResult result = generate_mesh(oracle, criteria, options);
   const TetMesh& mesh = result.mesh;
   test::expect_positive_orientation(mesh);
   test::expect_conforming(mesh);
@@ -78,6 +82,12 @@ TEST(SharpFeatures, CappedCylinderHasThreePatchesAndTwoClosedChains) {
   const double exact = M_PI * 0.25 * 1.0;
   EXPECT_NEAR(test::volume(mesh), exact, 0.01 * exact);
 }
+
+INSTANTIATE_TEST_SUITE_P(Methods, SharpFeatures,
+                         testing::Values(FeatureMethod::kProtectingBalls, FeatureMethod::kRefineEdges),
+                         [](const auto& info) {
+                           return info.param == FeatureMethod::kProtectingBalls ? "protect" : "refine";
+                         });
 
 }  // namespace
 }  // namespace rdmesh

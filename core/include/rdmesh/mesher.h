@@ -22,11 +22,25 @@ struct Progress {
   double elapsed_seconds = 0.0;
 };
 
+/// How sharp curves and corners enter the mesh.
+enum class FeatureMethod {
+  /// Protecting balls (weighted points) on corners and curves, sized before
+  /// refinement so that non-consecutive balls are disjoint; rules R3-R5 never
+  /// insert a point inside a ball. Terminates whatever angles features meet
+  /// at (RR-7912 section 7, [CDR07]). The default.
+  kProtectingBalls,
+  /// RR-7912's own rules R1/R2 (refine-edge with the encroachment cascade).
+  /// Needs the paper's angle hypothesis (features meeting at >= 90 degrees);
+  /// elsewhere the minimum-size guard ends the run.
+  kRefineEdges,
+};
+
 struct MeshOptions {
   /// Called every few thousand insertions (and once at the end), from the calling thread.
   std::function<void(const Progress&)> progress;
   /// Sliver exudation after refinement (on by default).
   ExudationOptions exudation;
+  FeatureMethod features = FeatureMethod::kProtectingBalls;
 };
 
 /// What refinement did, for the report.
@@ -46,6 +60,18 @@ struct RefinementStats {
   /// Patches the oracle lists but no output triangle carries (a component the
   /// initial points missed, or a patch too small for the criteria).
   std::vector<PatchId> missing_patches;
+  /// Protecting balls (FeatureMethod::kProtectingBalls; zero otherwise).
+  std::size_t protecting_balls = 0;
+  double min_ball_radius = 0.0;
+  /// Refinement restarts with smaller balls: a ball reached into a patch its
+  /// feature does not bound (at most MeshOptions' limit, see generate_mesh).
+  int protection_restarts = 0;
+  /// Pairs of balls still closer than the protection asks after their curve
+  /// pieces reached the minimum size, plus balls still reaching into a patch
+  /// after the last restart; the features involved (at most 20).
+  std::size_t protection_conflicts = 0;
+  std::vector<std::string> protection_features;
+  double seconds_protect = 0.0;  ///< sizing the balls (all rounds)
   double seconds_initial = 0.0;
   double seconds_refine = 0.0;
   double seconds_extract = 0.0;

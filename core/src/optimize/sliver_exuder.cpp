@@ -68,9 +68,11 @@ struct QueuedVertex {
 
 class Exuder {
  public:
-  Exuder(Triangulation& tr, const Criteria& criteria, const ExudationOptions& options)
+  Exuder(Triangulation& tr, const Criteria& criteria, const ExudationOptions& options,
+         const ChainEdges* chains)
       : tr_(tr),
         options_(options),
+        chains_(chains),
         limits_{&criteria, options.keep_cell_size, options.keep_radius_edge},
         bound_cosine_(std::cos(options.sliver_bound_deg * M_PI / 180)) {}
 
@@ -113,7 +115,7 @@ class Exuder {
   /// Weight pumping in passes of rising sliver bound (the worst slivers first
   /// across the whole mesh, then the milder ones); returns the next free stamp.
   std::uint32_t pump_passes(ExudationStats& stats, std::uint32_t next_stamp) {
-    WeightPump pump(tr_, next_stamp, limits_);
+    WeightPump pump(tr_, next_stamp, limits_, chains_);
     const int passes = std::max(1, options_.passes);
     for (int pass = 1; pass <= passes && !stats.time_limit_reached; ++pass) {
       bound_cosine_ = std::cos(options_.sliver_bound_deg * pass / passes * M_PI / 180);
@@ -121,7 +123,8 @@ class Exuder {
       process(
           [&](Vertex_handle v, int id) -> const std::vector<Cell_handle>* {
             ++stats.moves_tried;
-            const double max_weight = options_.max_weight_ratio * nearest_sq_[id];
+            const double max_weight =
+                v->info().ball_weight + options_.max_weight_ratio * nearest_sq_[id];
             if (pump.pump(v, max_weight) != WeightPump::Outcome::kAccepted) return nullptr;
             ++stats.moves_accepted;
             return &pump.new_cells();
@@ -239,6 +242,7 @@ class Exuder {
 
   Triangulation& tr_;
   ExudationOptions options_;
+  const ChainEdges* chains_;
   CellLimits limits_;
   double bound_cosine_;
   std::vector<double> nearest_sq_;
@@ -269,11 +273,11 @@ void check_invariants(const Triangulation& tr) {
 }  // namespace
 
 ExudationStats exude_slivers(Triangulation& tr, const Criteria& criteria,
-                             const ExudationOptions& options) {
+                             const ExudationOptions& options, const ChainEdges* chains) {
   validate(options);
   if (tr.dimension() < 3) return {};
   if (options.self_check) check_invariants(tr);
-  ExudationStats stats = Exuder(tr, criteria, options).run();
+  ExudationStats stats = Exuder(tr, criteria, options, chains).run();
   if (options.self_check) check_invariants(tr);
   return stats;
 }

@@ -1,8 +1,9 @@
 // Private to core/: sliver exudation (RR-7912 section 6, [CDE+00]) on the
 // triangulation left by Delaunay refinement.
 //
-// Vertices never move; each gets a weight in [0, ratio * N(v)^2] (N(v): the
-// distance to its nearest neighbour), chosen by WeightPump to maximize the
+// Vertices never move; each gets a weight in [w0, w0 + ratio * N(v)^2] (w0:
+// its weight before, a protecting ball's or 0; N(v): the distance to its
+// nearest neighbour), chosen by WeightPump to maximize the
 // smallest dihedral angle of the cells of D|O around it. Vertices incident to
 // a cell below the sliver bound are processed worst first (by the smallest
 // dihedral angle of their incident domain cells); a vertex whose star changed
@@ -28,6 +29,7 @@
 #pragma once
 
 #include "../triangulation_types.h"
+#include "chain_edges.h"
 #include "rdmesh/criteria.h"
 #include "rdmesh/optimization.h"
 
@@ -35,7 +37,9 @@ namespace rdmesh::detail {
 
 /// Runs sliver exudation on `tr` (three-dimensional, labelled by refinement
 /// with `criteria`, whose cell rules new cells keep as the options ask).
+/// `chains`: the edges of D|L, which stay mesh edges (null: every edge joining
+/// two feature vertices stays).
 ExudationStats exude_slivers(Triangulation& tr, const Criteria& criteria,
-                             const ExudationOptions& options);
+                             const ExudationOptions& options, const ChainEdges* chains = nullptr);
 
 }  // namespace rdmesh::detail

@@ -46,8 +46,9 @@ double cell_cosine(Cell_handle c) {
 
 }  // namespace
 
-WeightPump::WeightPump(Triangulation& tr, std::uint32_t first_stamp, CellLimits limits)
-    : tr_(tr), next_stamp_(first_stamp), limits_(limits) {
+WeightPump::WeightPump(Triangulation& tr, std::uint32_t first_stamp, CellLimits limits,
+                       const ChainEdges* chains)
+    : tr_(tr), next_stamp_(first_stamp), limits_(limits), chains_(chains) {
   zone_.reserve(128);
   boundary_.reserve(256);
   edges_.reserve(768);
@@ -204,8 +205,9 @@ WeightPump::Check WeightPump::validate(Vertex_handle v) {
       if (z < star_size_ || tr_.is_infinite(u) || u->info().dim > FeatureDim::kCurve) continue;
       for (int l = k + 1; l < 4; ++l) {
         const Vertex_handle t = c->vertex(l);
-        if (!tr_.is_infinite(t) && t->info().dim <= FeatureDim::kCurve && !has_boundary_edge(u, t))
-          return Check::kInvalidFromNowOn;
+        if (tr_.is_infinite(t) || t->info().dim > FeatureDim::kCurve) continue;
+        if (chains_ != nullptr && !chains_->contains(u, t)) continue;
+        if (!has_boundary_edge(u, t)) return Check::kInvalidFromNowOn;
       }
     }
   }

@@ -16,7 +16,8 @@
 //  - no restricted facet (D|S) disappears: Z never absorbs a cell across a
 //    restricted facet, and each restricted facet (v, a, b) of the old star
 //    keeps its edge ab on the boundary of Z (so (v, a, b) is a facet of the
-//    new star); no edge joining two feature vertices (dim <= 1) is lost;
+//    new star); no edge of D|L (ChainEdges; without them, no edge joining two
+//    feature vertices, dim <= 1) is lost;
 //  - labels stay consistent: a new cell takes the label of its outer
 //    neighbour across a non-restricted boundary facet, the label of the old
 //    cell it replaces across a restricted one, and two new cells sharing a
@@ -39,6 +40,7 @@
 #include <vector>
 
 #include "../triangulation_types.h"
+#include "chain_edges.h"
 #include "rdmesh/criteria.h"
 
 namespace rdmesh::detail {
@@ -59,7 +61,10 @@ class WeightPump {
   };
 
   /// `first_stamp`: the stamp given to the first cell this pump creates.
-  WeightPump(Triangulation& tr, std::uint32_t first_stamp, CellLimits limits = {});
+  /// `chains`: the edges of D|L to keep; null keeps every edge joining two
+  /// feature vertices (dim <= 1).
+  WeightPump(Triangulation& tr, std::uint32_t first_stamp, CellLimits limits = {},
+             const ChainEdges* chains = nullptr);
 
   /// Tries weights of `v` in (current weight, max_weight]; applies the best one.
   Outcome pump(Vertex_handle v, double max_weight);
@@ -121,6 +126,7 @@ class WeightPump {
   Triangulation& tr_;
   std::uint32_t next_stamp_;
   CellLimits limits_;
+  const ChainEdges* chains_;
   std::vector<Cell_handle> zone_;  ///< Z: the star of v first, then absorbed cells
   std::size_t star_size_ = 0;
   double zone_quality_ = -1;       ///< worst cosine over the domain cells of Z

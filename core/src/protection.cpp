@@ -1,0 +1,397 @@
+// Protecting balls on corners and curves (see protection.h for the
+// properties B1-B3, the construction and why they make refinement end near
+// small angles).
+#include "protection.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <unordered_map>
+
+#include "rdmesh/errors.h"
+
+namespace rdmesh::detail {
+namespace {
+
+double squared_distance_to_segment(Point3 x, Point3 a, Point3 b) {
+  const Point3 ab = b - a;
+  const double len2 = squared_norm(ab);
+  const double s = len2 > 0 ? std::clamp(dot(x - a, ab) / len2, 0.0, 1.0) : 0.0;
+  return squared_norm(a + s * ab - x);
+}
+
+/// A fixed pseudo-random number in [-1, 1] for sample k of curve j.
+double jitter(std::size_t j, std::size_t k) {
+  std::uint64_t x = (static_cast<std::uint64_t>(j) << 32) ^ k ^ 0x9e3779b97f4a7c15ULL;
+  x ^= x >> 33;
+  x *= 0xff51afd7ed558ccdULL;
+  x ^= x >> 33;
+  x *= 0xc4ceb9fe1a85ec53ULL;
+  x ^= x >> 33;
+  return static_cast<double>(x >> 11) / static_cast<double>(1ULL << 52) - 1.0;
+}
+
+/// A ball of the plan, for the separation test.
+struct Ball {
+  Point3 center;
+  double radius;
+  BallRef ref;
+};
+
+}  // namespace
+
+ProtectionPlanner::ProtectionPlanner(std::vector<ProtectedCurve> curves,
+                                     std::vector<CornerInfo> corners, const Criteria& criteria,
+                                     double min_size)
+    : corners_(std::move(corners)), criteria_(criteria), min_size_(min_size) {
+  // A corner's ball: within the edge size, and well clear of the other corners.
+  corner_radius_.resize(corners_.size());
+  for (std::size_t q = 0; q < corners_.size(); ++q) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::size_t o = 0; o < corners_.size(); ++o) {
+      if (o != q) nearest = std::min(nearest, distance(corners_[q].point, corners_[o].point));
+    }
+    corner_radius_[q] =
+        std::max(min_size_, std::min(criteria_.edge_size(corners_[q].point), 0.4 * nearest));
+  }
+  for (ProtectedCurve& c : curves) {
+    CurveData d;
+    d.length = c.curve->length(c.info.t_begin, c.info.t_end);
+    if (!c.info.closed) {
+      const int n = static_cast<int>(corners_.size());
+      d.start = c.info.start.value - 1;
+      d.end = c.info.end.value - 1;
+      if (d.start < 0 || d.start >= n || d.end < 0 || d.end >= n) {
+        throw OracleError("curve " + c.info.name + " ends at no listed corner");
+      }
+    }
+    if (!(d.length > 0) || !std::isfinite(d.length)) {
+      throw OracleError("curve " + c.info.name + " has no positive finite length");
+    }
+    d.c = std::move(c);
+    curves_.push_back(std::move(d));
+  }
+}
+
+double ProtectionPlanner::step_at(const CurveData& d, double a) const {
+  auto size_at = [&](double x) {
+    if (criteria_.edge_size.is_uniform()) return 2 * criteria_.edge_size.constant;
+    const double t = d.c.curve->parameter_at_length(d.c.info.t_begin, std::min(x, d.length));
+    return 2 * criteria_.edge_size(d.c.curve->point(t));
+  };
+  // The step from a must respect the size all along [a, a + s], its far end
+  // included (the next sample's own cap): s = min over that window, found by
+  // a few decreasing fixed-point iterations.
+  double s = size_at(a);
+  for (int it = 0; it < 4; ++it) {
+    double m = std::min(size_at(a), size_at(a + s));
+    for (const Cap& cap : d.caps) {
+      double gap = cap.arc < a ? a - cap.arc : (cap.arc > a + s ? cap.arc - a - s : 0.0);
+      if (d.c.info.closed) {
+        const double wrapped = std::min(std::fabs(cap.arc + d.length - a),
+                                        std::fabs(cap.arc - d.length - a));
+        gap = std::min(gap, std::max(0.0, wrapped - s));
+      }
+      m = std::min(m, cap.value + kGrowth * gap);
+    }
+    if (m >= s) break;
+    s = m;
+  }
+  return std::max(s, min_size_);
+}
+
+double ProtectionPlanner::exit_arc(const CurveData& d, const Point3& q, double r,
+                                   bool from_end) const {
+  const Curve& curve = *d.c.curve;
+  auto gap = [&](double a) {
+    const double t = curve.parameter_at_length(d.c.info.t_begin, from_end ? d.length - a : a);
+    return distance(curve.point(t), q) - r;
+  };
+  // Arc length >= chord: the curve leaves the ball at arc length >= r.
+  double lo = 0, hi = std::min(r, d.length);
+  while (gap(hi) < 0) {
+    if (hi >= d.length) return d.length;  // the ball holds the whole curve
+    lo = hi;
+    hi = std::min(d.length, 1.5 * hi + r);
+  }
+  for (int it = 0; it < 50 && hi - lo > 1e-12 * d.length; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (gap(mid) < 0 ? lo : hi) = mid;
+  }
+  return hi;
+}
+
+void ProtectionPlanner::sample_curve(CurveData& d) {
+  const Curve& curve = *d.c.curve;
+  const CurveInfo& info = d.c.info;
+  auto sample = [&](double a, double radius) {
+    const double t = curve.parameter_at_length(info.t_begin, a);
+    return BallSample{t, a, curve.point(t), radius};
+  };
+  d.samples.clear();
+  double a0 = 0, a1 = d.length;
+  if (!info.closed) {
+    const Point3 qs = corners_[d.start].point, qe = corners_[d.end].point;
+    d.samples.push_back({info.t_begin, 0, qs, corner_radius_[d.start]});
+    a0 = exit_arc(d, qs, corner_radius_[d.start], false);
+    a1 = d.length - exit_arc(d, qe, corner_radius_[d.end], true);
+  }
+  const double span = a1 - a0;
+  const double step0 = step_at(d, a0);
+  if (!info.closed && span <= kRadiusRatio * 1.2 * step0) {
+    // The corner balls (nearly) meet: one sample between them.
+    const double mid = std::clamp(0.5 * (a0 + a1), 0.0, d.length);
+    d.samples.push_back(sample(mid, kRadiusRatio * std::min(step0, step_at(d, mid))));
+  } else {
+    // March with the local step, then scale the positions down so that the
+    // last lands exactly at a1 (never stretched: chords stay within steps).
+    std::vector<double> arcs{a0}, steps;
+    while (arcs.back() < a1) {
+      // Shortened so that the jittered chords below stay within the step.
+      steps.push_back(step_at(d, arcs.back()) / (1 + 2 * kJitter));
+      arcs.push_back(arcs.back() + steps.back());
+    }
+    const std::size_t min_steps = info.closed ? 3 : 1;
+    while (steps.size() < min_steps) {  // too short a closed curve: equal thirds
+      steps.assign(min_steps, span / min_steps);
+      arcs.assign(1, a0);
+      for (double s : steps) arcs.push_back(arcs.back() + s);
+    }
+    const double f = span / (arcs.back() - a0);
+    const std::size_t n = steps.size();
+    for (std::size_t k = 0; k <= n; ++k) {
+      if (info.closed && k == n) break;  // the first sample again, added below
+      double s = k < n ? steps[k] : steps[n - 1];
+      if (k > 0) s = std::max(s, steps[k - 1]);
+      if (info.closed && k == 0) s = std::max(s, steps[n - 1]);
+      // Inner samples move by a fixed pseudo-random kJitter of their step:
+      // symmetric features sampled alike (two meridians at the same heights)
+      // would give co-spherical ball quadruples, flat cells whose orthocenter
+      // is undefined. The margins of B1 and B2 absorb the move.
+      double a = a0 + f * (arcs[k] - a0);
+      if (k > 0 && k < n) a += kJitter * f * s * jitter(curve_index(d), k);
+      d.samples.push_back(sample(a, kRadiusRatio * f * s));
+    }
+    if (info.closed) {
+      BallSample last = d.samples.front();
+      last.t = info.t_end;
+      last.arc = d.length;
+      d.samples.push_back(last);
+    }
+  }
+  if (!info.closed) {
+    d.samples.push_back({info.t_end, d.length, corners_[d.end].point, corner_radius_[d.end]});
+  }
+}
+
+bool ProtectionPlanner::shrink_ball(const BallRef& b, double factor) {
+  if (b.curve < 0) {
+    double& r = corner_radius_[b.corner];
+    if (factor * r < min_size_) return false;
+    r *= factor;
+    return true;
+  }
+  CurveData& d = curves_[b.curve];
+  const BallSample& s = d.samples[b.index];
+  const double value = factor * s.radius / kRadiusRatio;
+  if (value < 2 * min_size_) return false;
+  for (Cap& cap : d.caps) {
+    if (std::fabs(cap.arc - s.arc) <= 1e-12 * d.length) {
+      cap.value = std::min(cap.value, value);
+      return true;
+    }
+  }
+  d.caps.push_back({s.arc, value});
+  return true;
+}
+
+bool ProtectionPlanner::check_arcs() {
+  bool changed = false;
+  const double dmax2 = criteria_.facet_distance * criteria_.facet_distance;
+  for (std::size_t j = 0; j < curves_.size(); ++j) {
+    const CurveData& d = curves_[j];
+    const std::vector<BallSample>& s = d.samples;
+    for (std::size_t i = 0; i + 1 < s.size(); ++i) {
+      const Point3 mid = d.c.curve->point(0.5 * (s[i].t + s[i + 1].t));
+      const double sigma = criteria_.edge_size(mid);
+      const bool long_chord = distance(s[i].point, s[i + 1].point) > 2 * sigma;
+      if (!long_chord && squared_distance_to_segment(mid, s[i].point, s[i + 1].point) <= dmax2) {
+        continue;
+      }
+      // Shrink both ends (a corner end is the corner's ball).
+      for (std::size_t k : {i, i + 1}) {
+        BallRef ref{static_cast<int>(j), static_cast<int>(k), -1};
+        if (!d.c.info.closed && k == 0) ref = BallRef{-1, 0, d.start};
+        if (!d.c.info.closed && k + 1 == s.size()) ref = BallRef{-1, 0, d.end};
+        if (d.c.info.closed && k + 1 == s.size()) ref.index = 0;
+        changed = shrink_ball(ref, 0.7) || changed;
+      }
+    }
+  }
+  return changed;
+}
+
+std::string ProtectionPlanner::name(const BallRef& b) const {
+  return b.curve < 0 ? "corner " + std::to_string(b.corner + 1)
+                     : "curve " + curves_[b.curve].c.info.name;
+}
+
+bool ProtectionPlanner::separate_balls(bool record) {
+  // Every ball once: corners, then the samples of each curve between its ends
+  // (a closed curve's first sample stands for its repeated last one).
+  std::vector<Ball> balls;
+  for (std::size_t q = 0; q < corners_.size(); ++q) {
+    balls.push_back({corners_[q].point, corner_radius_[q], BallRef{-1, 0, static_cast<int>(q)}});
+  }
+  for (std::size_t j = 0; j < curves_.size(); ++j) {
+    const std::vector<BallSample>& s = curves_[j].samples;
+    const std::size_t first = curves_[j].c.info.closed ? 0 : 1;
+    for (std::size_t i = first; i + 1 < s.size(); ++i) {
+      balls.push_back({s[i].point, s[i].radius, BallRef{static_cast<int>(j), static_cast<int>(i)}});
+    }
+  }
+  if (balls.size() < 2) return false;
+  auto adjacent = [&](const BallRef& a, const BallRef& b) {
+    if (a.curve >= 0 && a.curve == b.curve) {
+      const int n = static_cast<int>(curves_[a.curve].samples.size()) - 1;  // distinct samples
+      const int d = std::abs(a.index - b.index);
+      return d == 1 || (curves_[a.curve].c.info.closed && d == n - 1);
+    }
+    if (a.curve < 0 && b.curve < 0) return false;
+    const BallRef& q = a.curve < 0 ? a : b;
+    const BallRef& s = a.curve < 0 ? b : a;
+    const CurveData& d = curves_[s.curve];
+    if (d.c.info.closed) return false;
+    const int last = static_cast<int>(d.samples.size()) - 2;
+    return (d.start == q.corner && s.index == 1) || (d.end == q.corner && s.index == last);
+  };
+  // A hierarchical hash grid: a ball lives at the level whose cells are at
+  // least its reach's diameter, by its centre only. Each ball is tested
+  // against the balls of its own level and of the coarser ones in the cells
+  // near it, so every pair is seen once, from its smaller ball.
+  double smallest = std::numeric_limits<double>::infinity();
+  for (const Ball& b : balls) smallest = std::min(smallest, b.radius);
+  const double base = std::max(2 * (1 + kGap) * smallest, 1e-300);
+  auto level_of = [&](double radius) {
+    return std::max(0, static_cast<int>(std::ceil(std::log2(2 * (1 + kGap) * radius / base))));
+  };
+  auto key = [](std::int64_t x, std::int64_t y, std::int64_t z) {
+    return (static_cast<std::uint64_t>(x & 0x1fffff) << 42) |
+           (static_cast<std::uint64_t>(y & 0x1fffff) << 21) | static_cast<std::uint64_t>(z & 0x1fffff);
+  };
+  std::vector<int> level(balls.size());
+  std::map<int, std::unordered_map<std::uint64_t, std::vector<int>>> grids;
+  for (std::size_t k = 0; k < balls.size(); ++k) {
+    level[k] = level_of(balls[k].radius);
+    const double cell = std::ldexp(base, level[k]);
+    const Point3& c = balls[k].center;
+    grids[level[k]][key(static_cast<std::int64_t>(std::floor(c.x / cell)),
+                        static_cast<std::int64_t>(std::floor(c.y / cell)),
+                        static_cast<std::int64_t>(std::floor(c.z / cell)))]
+        .push_back(static_cast<int>(k));
+  }
+  std::vector<double> factor(balls.size(), 1.0);
+  bool conflict = false;
+  for (std::size_t k = 0; k < balls.size(); ++k) {
+    const Ball& b = balls[k];
+    for (auto g = grids.lower_bound(level[k]); g != grids.end(); ++g) {
+      const double cell = std::ldexp(base, g->first);
+      const double reach = (1 + kGap) * b.radius + 0.5 * cell;
+      const double c[3] = {b.center.x, b.center.y, b.center.z};
+      std::int64_t lo[3], hi[3];
+      for (int axis = 0; axis < 3; ++axis) {
+        lo[axis] = static_cast<std::int64_t>(std::floor((c[axis] - reach) / cell));
+        hi[axis] = static_cast<std::int64_t>(std::floor((c[axis] + reach) / cell));
+      }
+      for (std::int64_t x = lo[0]; x <= hi[0]; ++x) {
+        for (std::int64_t y = lo[1]; y <= hi[1]; ++y) {
+          for (std::int64_t z = lo[2]; z <= hi[2]; ++z) {
+            const auto here = g->second.find(key(x, y, z));
+            if (here == g->second.end()) continue;
+            for (int other : here->second) {
+              // Same level: each pair once, from its first ball.
+              if (level[other] == level[k] && other <= static_cast<int>(k)) continue;
+              const Ball& o = balls[other];
+              const double need = b.radius + o.radius + kGap * std::min(b.radius, o.radius);
+              const double dist = distance(b.center, o.center);
+              if (dist >= need || adjacent(b.ref, o.ref)) continue;
+              conflict = true;
+              if (record) {
+                ++unresolved_pairs_;
+                const std::string what = name(b.ref) + " near " + name(o.ref);
+                if (unresolved_.size() < 20 &&
+                    std::find(unresolved_.begin(), unresolved_.end(), what) == unresolved_.end()) {
+                  unresolved_.push_back(what);
+                }
+                continue;
+              }
+              const double f = 0.95 * dist / need;
+              factor[k] = std::min(factor[k], f);
+              factor[other] = std::min(factor[other], f);
+            }
+          }
+        }
+      }
+    }
+  }
+  if (!conflict || record) return false;
+  bool changed = false;
+  for (std::size_t k = 0; k < balls.size(); ++k) {
+    if (factor[k] < 1) changed = shrink_ball(balls[k].ref, factor[k]) || changed;
+  }
+  return changed;
+}
+
+void ProtectionPlanner::resolve() {
+  // Every round shrinks some ball by a factor < 1 and no ball goes below the
+  // minimum size, so the rounds end; the bound is a backstop.
+  for (int round = 0; round < 1000; ++round) {
+    for (CurveData& d : curves_) sample_curve(d);
+    bool changed = check_arcs();
+    changed = separate_balls(false) || changed;
+    if (!changed) break;
+  }
+  for (CurveData& d : curves_) sample_curve(d);
+  unresolved_.clear();
+  unresolved_pairs_ = 0;
+  separate_balls(true);
+}
+
+ProtectionPlan ProtectionPlanner::plan() {
+  resolve();
+  return result();
+}
+
+ProtectionPlan ProtectionPlanner::shrink(const std::vector<BallRef>& balls) {
+  for (const BallRef& b : balls) {
+    if (b.curve >= 0 && (b.curve >= static_cast<int>(curves_.size()) || b.index < 0 ||
+                         b.index >= static_cast<int>(curves_[b.curve].samples.size()))) {
+      continue;
+    }
+    if (b.curve < 0 && (b.corner < 0 || b.corner >= static_cast<int>(corners_.size()))) continue;
+    shrink_ball(b, 0.5);
+  }
+  resolve();
+  return result();
+}
+
+ProtectionPlan ProtectionPlanner::result() const {
+  ProtectionPlan plan;
+  plan.corner_radius = corner_radius_;
+  plan.unresolved = unresolved_;
+  plan.unresolved_pairs = unresolved_pairs_;
+  plan.min_radius = std::numeric_limits<double>::infinity();
+  plan.balls = corners_.size();
+  for (double r : corner_radius_) plan.min_radius = std::min(plan.min_radius, r);
+  for (const CurveData& d : curves_) {
+    plan.curves.push_back(CurveProtection{d.samples});
+    plan.balls += d.samples.size() - (d.c.info.closed ? 1 : 2);
+    for (const BallSample& s : d.samples) plan.min_radius = std::min(plan.min_radius, s.radius);
+  }
+  if (!std::isfinite(plan.min_radius)) plan.min_radius = 0;
+  return plan;
+}
+
+}  // namespace rdmesh::detail

@@ -1,0 +1,139 @@
+// Private to core/: protecting balls on the sharp features (corners Q and
+// curves L), the weighted-point protection that RR-7912's conclusion names as
+// the way past its angle hypothesis ([CDR07]; CGAL Mesh_3 does the same).
+//
+// Every corner and a sequence of points along every curve carry a ball. The
+// balls are inserted into the regular triangulation as weighted points
+// (weight = radius^2) before any patch point. They satisfy:
+//   (B1) consecutive balls of a curve overlap (a corner's ball overlaps the
+//        first ball of each incident curve), so the balls of a curve cover it:
+//        |c_i - c_j| <= r_i + r_j - kOverlap min(r_i, r_j);
+//   (B2) any two balls that are not consecutive are disjoint, with a margin:
+//        |c_i - c_j| >= r_i + r_j + kGap min(r_i, r_j);
+//   (B3) the chord between consecutive centres is at most twice the edge size
+//        (rule R2 of the paper: the restricted edge's ball within the size)
+//        and stays within facet_distance of the curve.
+// Then the restricted Delaunay triangulation of each curve D|L_j is exactly the
+// chain of its consecutive ball centres, whatever the angles at which features
+// meet (rule R1 never fires), and every refinement point of rules R3-R5 lies
+// outside all balls (a point of non-negative power to every vertex), so no
+// later insertion encroaches a curve.
+//
+// Construction. A corner ball has its own radius (at most the edge size and
+// 0.4 of the distance to the nearest other corner). Between the corner balls
+// at its ends, a curve is sampled by marching along its arc length with steps
+// s(a) = min(2 * edge_size, caps), starting and ending on the corner balls'
+// spheres, each sample getting radius kRadiusRatio * step. Caps are point
+// constraints (a_k, v_k) spreading as v_k + kGrowth |a - a_k|, so sizes vary
+// gradually. Where (B2) or (B3) fails, the balls involved shrink (a cap at a
+// curve sample, a smaller radius at a corner) and the curves are sampled
+// again, until every ball is fine or would fall below the minimum size (then
+// the pair is recorded, like the refinement guard).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "rdmesh/criteria.h"
+#include "rdmesh/curve.h"
+
+namespace rdmesh::detail {
+
+/// A ball centre on a curve: parameter, arc length from the curve's start,
+/// point and radius.
+struct BallSample {
+  double t = 0;
+  double arc = 0;
+  Point3 point;
+  double radius = 0;
+};
+
+/// The balls of one curve, ordered by parameter. An open curve starts and ends
+/// at its corners (whose radius is the corner's); a closed curve repeats its
+/// first sample at t_end, so that arcs are consecutive pairs.
+struct CurveProtection {
+  std::vector<BallSample> samples;
+};
+
+/// A ball to shrink: sample `index` of curve `curve` (index into the curve
+/// table), or corner `corner` (index into the corner table) when curve < 0.
+struct BallRef {
+  int curve = -1;
+  int index = 0;
+  int corner = -1;
+};
+
+struct ProtectionPlan {
+  std::vector<CurveProtection> curves;  ///< index = CurveId - 1
+  std::vector<double> corner_radius;    ///< index = CornerId - 1
+  /// Pairs of balls still violating (B2) when they reached the minimum size,
+  /// named "curve A near curve B" (distinct, at most 20).
+  std::vector<std::string> unresolved;
+  std::size_t unresolved_pairs = 0;
+  std::size_t balls = 0;
+  double min_radius = 0;
+};
+
+/// One curve as the planner sees it.
+struct ProtectedCurve {
+  CurveInfo info;
+  const Curve* curve = nullptr;
+};
+
+class ProtectionPlanner {
+ public:
+  static constexpr double kRadiusRatio = 0.6;
+  static constexpr double kOverlap = 0.2;
+  static constexpr double kGap = 0.1;
+  static constexpr double kGrowth = 0.25;
+  static constexpr double kJitter = 0.03;
+
+  ProtectionPlanner(std::vector<ProtectedCurve> curves, std::vector<CornerInfo> corners,
+                    const Criteria& criteria, double min_size);
+
+  /// Samples every curve and shrinks balls until (B1)-(B3) hold.
+  ProtectionPlan plan();
+  /// Halves the given balls of the last plan (a refinement found them reaching
+  /// into a patch their feature does not bound) and plans again.
+  ProtectionPlan shrink(const std::vector<BallRef>& balls);
+
+ private:
+  struct Cap {
+    double arc, value;
+  };
+  struct CurveData {
+    ProtectedCurve c;
+    double length = 0;
+    int start = -1, end = -1;  ///< corner indices (open curves)
+    std::vector<Cap> caps;
+    std::vector<BallSample> samples;
+  };
+
+  /// The step size at arc length a of curve j.
+  double step_at(const CurveData& d, double a) const;
+  /// Arc length at which curve j leaves the ball of radius r around its start
+  /// (from_end: around its end, measured from the end).
+  double exit_arc(const CurveData& d, const Point3& q, double r, bool from_end) const;
+  void sample_curve(CurveData& d);
+  /// Shrinks ball b to `factor` of its size; false when it is at the minimum.
+  bool shrink_ball(const BallRef& b, double factor);
+  /// Shrinks balls whose arcs violate (B3); true if any changed.
+  bool check_arcs();
+  /// Shrinks balls violating (B2); true if any changed. With `record`, only
+  /// records the violating pairs as unresolved.
+  bool separate_balls(bool record);
+  void resolve();
+  ProtectionPlan result() const;
+  std::string name(const BallRef& b) const;
+  std::size_t curve_index(const CurveData& d) const { return &d - curves_.data(); }
+
+  std::vector<CurveData> curves_;
+  std::vector<CornerInfo> corners_;
+  Criteria criteria_;
+  double min_size_;
+  std::vector<double> corner_radius_;
+  std::vector<std::string> unresolved_;
+  std::size_t unresolved_pairs_ = 0;
+};
+
+}  // namespace rdmesh::detail

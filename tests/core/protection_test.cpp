@@ -1,0 +1,196 @@
+// The protecting-ball planner (core/src/protection.h): on real curve layouts,
+// including curves meeting at 30 degrees and tangent curves meeting at a
+// corner, the plan satisfies B1 (consecutive balls overlap), B2 (other balls
+// are disjoint, with the margin) and B3 (chords within twice the edge size and
+// within facet_distance of the curve).
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <vector>
+
+#include "protection.h"
+#include "rdmesh/domain_file.h"
+#include "rdmesh/parametric_curve.h"
+#include "test_domains.h"
+
+namespace rdmesh::detail {
+namespace {
+
+using Planner = ProtectionPlanner;
+
+struct Layout {
+  std::vector<ProtectedCurve> curves;
+  std::vector<CornerInfo> corners;
+};
+
+Layout from_oracle(const DomainOracle& o) {
+  Layout l;
+  for (const CurveInfo& info : o.curves()) l.curves.push_back({info, &o.curve(info.id)});
+  l.corners = o.corners();
+  return l;
+}
+
+struct Ball {
+  Point3 c;
+  double r;
+  int curve, index;  ///< curve index and sample index; curve -1 for a corner
+};
+
+double sagitta(const Curve& curve, const BallSample& a, const BallSample& b) {
+  const Point3 m = curve.point(0.5 * (a.t + b.t));
+  const Point3 ab = b.point - a.point;
+  const double s = std::clamp(dot(m - a.point, ab) / squared_norm(ab), 0.0, 1.0);
+  return distance(a.point + s * ab, m);
+}
+
+/// Checks B1-B3 on `plan` and that every ball centre lies on its feature.
+void expect_protected(const Layout& l, const ProtectionPlan& plan, const Criteria& criteria) {
+  ASSERT_EQ(plan.curves.size(), l.curves.size());
+  ASSERT_EQ(plan.corner_radius.size(), l.corners.size());
+  EXPECT_TRUE(plan.unresolved.empty());
+  EXPECT_EQ(plan.unresolved_pairs, 0u);
+  std::vector<Ball> balls;
+  for (std::size_t q = 0; q < l.corners.size(); ++q) {
+    EXPECT_GT(plan.corner_radius[q], 0);
+    balls.push_back({l.corners[q].point, plan.corner_radius[q], -1, static_cast<int>(q)});
+  }
+  for (std::size_t j = 0; j < l.curves.size(); ++j) {
+    const CurveInfo& info = l.curves[j].info;
+    const Curve& curve = *l.curves[j].curve;
+    const std::vector<BallSample>& s = plan.curves[j].samples;
+    ASSERT_GE(s.size(), info.closed ? 4u : 3u) << info.name;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      EXPECT_LE(distance(s[i].point, curve.point(s[i].t)), 1e-9) << info.name;
+      if (i > 0) EXPECT_GT(s[i].t, s[i - 1].t) << info.name;
+    }
+    if (!info.closed) {
+      EXPECT_EQ(s.front().point, l.corners[info.start.value - 1].point);
+      EXPECT_EQ(s.back().point, l.corners[info.end.value - 1].point);
+    }
+    for (std::size_t i = 0; i + 1 < s.size(); ++i) {
+      // B1: consecutive balls overlap by kOverlap of the smaller one.
+      const double r = std::min(s[i].radius, s[i + 1].radius);
+      EXPECT_LE(distance(s[i].point, s[i + 1].point),
+                s[i].radius + s[i + 1].radius - Planner::kOverlap * r + 1e-12)
+          << info.name << " arc " << i;
+      // B3: the chord within twice the edge size and near the curve.
+      const Point3 mid = curve.point(0.5 * (s[i].t + s[i + 1].t));
+      EXPECT_LE(distance(s[i].point, s[i + 1].point), 2 * criteria.edge_size(mid) * (1 + 1e-12));
+      EXPECT_LE(sagitta(curve, s[i], s[i + 1]), criteria.facet_distance * (1 + 1e-9));
+    }
+    const std::size_t first = info.closed ? 0 : 1;
+    for (std::size_t i = first; i + 1 < s.size(); ++i) {
+      balls.push_back({s[i].point, s[i].radius, static_cast<int>(j), static_cast<int>(i)});
+    }
+  }
+  // B2: balls that are not consecutive are disjoint, with the gap.
+  auto adjacent = [&](const Ball& a, const Ball& b) {
+    if (a.curve >= 0 && a.curve == b.curve) {
+      const int n = static_cast<int>(plan.curves[a.curve].samples.size()) - 1;
+      const int d = std::abs(a.index - b.index);
+      return d == 1 || (l.curves[a.curve].info.closed && d == n - 1);
+    }
+    if ((a.curve < 0) == (b.curve < 0)) return false;
+    const Ball& q = a.curve < 0 ? a : b;
+    const Ball& s = a.curve < 0 ? b : a;
+    const CurveInfo& info = l.curves[s.curve].info;
+    const int last = static_cast<int>(plan.curves[s.curve].samples.size()) - 2;
+    return !info.closed && ((info.start.value == q.index + 1 && s.index == 1) ||
+                            (info.end.value == q.index + 1 && s.index == last));
+  };
+  std::size_t overlapping = 0;
+  for (std::size_t a = 0; a < balls.size(); ++a) {
+    for (std::size_t b = a + 1; b < balls.size(); ++b) {
+      if (adjacent(balls[a], balls[b])) continue;
+      const double need = balls[a].r + balls[b].r + Planner::kGap * std::min(balls[a].r, balls[b].r);
+      if (distance(balls[a].c, balls[b].c) < need * (1 - 1e-12)) ++overlapping;
+    }
+  }
+  EXPECT_EQ(overlapping, 0u) << "non-consecutive balls overlap";
+}
+
+ProtectionPlan plan_for(const Layout& l, const Criteria& c, double min_size) {
+  Planner planner(l.curves, l.corners, c, min_size);
+  return planner.plan();
+}
+
+TEST(Protection, CubeEdgesAndCorners) {
+  const LoadedDomain d = load_domain_file(std::string(RDMESH_SOURCE_DIR) + "/samples/cube.json");
+  const Layout l = from_oracle(*d.oracle);
+  const Criteria c = test::uniform_criteria(0.15);
+  const ProtectionPlan plan = plan_for(l, c, 1e-5);
+  expect_protected(l, plan, c);
+  EXPECT_EQ(plan.corner_radius.size(), 8u);
+}
+
+TEST(Protection, CurvesMeetingAtThirtyDegreesAreSeparated) {
+  // The wedge's two meridians meet at 30 degrees at both poles, where the axis
+  // meets them at 90: the balls shrink towards the poles and stay apart.
+  const LoadedDomain d = load_domain_file(std::string(RDMESH_SOURCE_DIR) + "/samples/wedge.json");
+  const Layout l = from_oracle(*d.oracle);
+  const Criteria c = test::uniform_criteria(0.15);
+  const ProtectionPlan plan = plan_for(l, c, 1e-5);
+  expect_protected(l, plan, c);
+  EXPECT_LT(plan.min_radius, 0.5 * 0.15) << "the balls near the poles are smaller";
+}
+
+TEST(Protection, TangentCurvesMeetingAtACorner) {
+  // y = 0 and y = x^2 / 2 from the origin: tangent there (a zero angle). Balls
+  // can only be disjoint far enough from the corner, so they grow from it.
+  ParametricCurve line([](double t) { return Point3{t, 0, 0}; }, 0, 1);
+  ParametricCurve parabola([](double t) { return Point3{t, 0.5 * t * t, 0}; }, 0, 1);
+  Layout l;
+  l.corners = {{CornerId(1), {0, 0, 0}, {CurveId(1), CurveId(2)}, {}},
+               {CornerId(2), {1, 0, 0}, {CurveId(1)}, {}},
+               {CornerId(3), {1, 0.5, 0}, {CurveId(2)}, {}}};
+  CurveInfo a{CurveId(1), "line", false, 0, 1, CornerId(1), CornerId(2), {}};
+  CurveInfo b{CurveId(2), "parabola", false, 0, 1, CornerId(1), CornerId(3), {}};
+  l.curves = {{a, &line}, {b, &parabola}};
+  const Criteria c = test::uniform_criteria(0.2);
+  const ProtectionPlan plan = plan_for(l, c, 1e-5);
+  expect_protected(l, plan, c);
+  // Near the corner the balls are much smaller than the edge size.
+  EXPECT_LT(plan.curves[0].samples[1].radius, 0.25 * 0.2);
+}
+
+TEST(Protection, ShrinkMakesTheBallsAroundASampleSmaller) {
+  const LoadedDomain d =
+      load_domain_file(std::string(RDMESH_SOURCE_DIR) + "/samples/capped_cylinder.json");
+  const Layout l = from_oracle(*d.oracle);
+  const Criteria c = test::uniform_criteria(0.1);
+  Planner planner(l.curves, l.corners, c, 1e-5);
+  const ProtectionPlan before = planner.plan();
+  const std::size_t k = before.curves[0].samples.size() / 2;
+  const Point3 where = before.curves[0].samples[k].point;
+  const double radius = before.curves[0].samples[k].radius;
+  const ProtectionPlan after = planner.shrink({BallRef{0, static_cast<int>(k), -1}});
+  expect_protected(l, after, c);
+  double nearest = HUGE_VAL, r = 0;
+  for (const BallSample& s : after.curves[0].samples) {
+    if (distance(s.point, where) < nearest) nearest = distance(s.point, where), r = s.radius;
+  }
+  EXPECT_LE(r, 0.6 * radius) << "the ball there shrank";
+  EXPECT_GT(after.balls, before.balls);
+}
+
+TEST(Protection, CurvesCloserThanTheMinimumSizeAreReported) {
+  // Two parallel segments 1e-4 apart, each between its own corners: with a
+  // minimum size of 1e-3 their balls cannot be made disjoint.
+  ParametricCurve lower([](double t) { return Point3{t, 0, 0}; }, 0, 1);
+  ParametricCurve upper([](double t) { return Point3{t, 1e-4, 0}; }, 0, 1);
+  Layout l;
+  l.corners = {{CornerId(1), {0, 0, 0}, {CurveId(1)}, {}},
+               {CornerId(2), {1, 0, 0}, {CurveId(1)}, {}},
+               {CornerId(3), {0, 1e-4, 0}, {CurveId(2)}, {}},
+               {CornerId(4), {1, 1e-4, 0}, {CurveId(2)}, {}}};
+  l.curves = {{CurveInfo{CurveId(1), "lower", false, 0, 1, CornerId(1), CornerId(2), {}}, &lower},
+              {CurveInfo{CurveId(2), "upper", false, 0, 1, CornerId(3), CornerId(4), {}}, &upper}};
+  const ProtectionPlan plan = plan_for(l, test::uniform_criteria(0.2), 1e-3);
+  EXPECT_GT(plan.unresolved_pairs, 0u);
+  ASSERT_FALSE(plan.unresolved.empty());
+  EXPECT_NE(plan.unresolved.front().find("near"), std::string::npos);
+  EXPECT_GE(plan.min_radius, 1e-3 * 0.5);
+}
+
+}  // namespace
+}  // namespace rdmesh::detail
