@@ -73,26 +73,32 @@ MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& criteria,
   double protect_seconds = seconds_since(t);
   // A ball found reaching into a patch its feature does not bound is shrunk
   // and refinement starts again (it stops early, once the surface rules are
-  // done, so a restart costs little); after the last restart the conflict is
-  // reported instead.
+  // done, so a restart costs little). When no ball can shrink any more, or
+  // after the last restart, the run goes on and the conflict is reported.
   constexpr int kMaxRestarts = 6;
   std::unique_ptr<detail::Refiner> refiner;
   double initial = 0, refine = 0;
   int restarts = 0;
-  for (;; ++restarts) {
+  for (bool restart = true; restart;) {
     refiner = std::make_unique<detail::Refiner>(oracle, criteria, options,
                                                 protect ? &plan : nullptr);
     t = std::chrono::steady_clock::now();
     refiner->insert_initial_points();
     initial += seconds_since(t);
     t = std::chrono::steady_clock::now();
-    const bool may_restart = protect && restarts < kMaxRestarts;
-    refiner->refine(may_restart);
+    refiner->refine(protect && restarts < kMaxRestarts);
+    restart = false;
+    if (protect && restarts < kMaxRestarts && !refiner->conflicts().empty()) {
+      const auto ts = std::chrono::steady_clock::now();
+      restart = planner->shrink(refiner->conflicts(), plan);
+      protect_seconds += seconds_since(ts);
+      if (restart) {
+        ++restarts;
+      } else {
+        refiner->refine();  // as small as the minimum size allows: finish this run
+      }
+    }
     refine += seconds_since(t);
-    if (!may_restart || refiner->conflicts().empty()) break;
-    t = std::chrono::steady_clock::now();
-    plan = planner->shrink(refiner->conflicts());
-    protect_seconds += seconds_since(t);
   }
 
   MeshResult result;

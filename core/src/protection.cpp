@@ -84,9 +84,15 @@ double ProtectionPlanner::step_at(const CurveData& d, double a) const {
   // The step from a must respect the size all along [a, a + s], its far end
   // included (the next sample's own cap): s = min over that window, found by
   // a few decreasing fixed-point iterations.
+  // The corner balls at the ends act as caps: sizes grow from them gradually
+  // (a first sample much larger than its corner's ball would swallow it).
+  const double cap_start = d.start >= 0 ? corner_radius_[d.start] / kRadiusRatio : HUGE_VAL;
+  const double cap_end = d.end >= 0 ? corner_radius_[d.end] / kRadiusRatio : HUGE_VAL;
   double s = size_at(a);
   for (int it = 0; it < 4; ++it) {
     double m = std::min(size_at(a), size_at(a + s));
+    m = std::min(m, cap_start + kGrowth * a);
+    m = std::min(m, cap_end + kGrowth * std::max(0.0, d.length - a - s));
     for (const Cap& cap : d.caps) {
       double gap = cap.arc < a ? a - cap.arc : (cap.arc > a + s ? cap.arc - a - s : 0.0);
       if (d.c.info.closed) {
@@ -99,7 +105,7 @@ double ProtectionPlanner::step_at(const CurveData& d, double a) const {
     if (m >= s) break;
     s = m;
   }
-  return std::max(s, min_size_);
+  return std::max(s, 2 * min_size_);
 }
 
 double ProtectionPlanner::exit_arc(const CurveData& d, const Point3& q, double r,
@@ -191,20 +197,50 @@ bool ProtectionPlanner::shrink_ball(const BallRef& b, double factor) {
     double& r = corner_radius_[b.corner];
     if (factor * r < min_size_) return false;
     r *= factor;
+    for (CurveData& d : curves_) d.dirty = d.dirty || d.start == b.corner || d.end == b.corner;
     return true;
   }
   CurveData& d = curves_[b.curve];
   const BallSample& s = d.samples[b.index];
-  const double value = factor * s.radius / kRadiusRatio;
-  if (value < 2 * min_size_) return false;
-  for (Cap& cap : d.caps) {
-    if (std::fabs(cap.arc - s.arc) <= 1e-12 * d.length) {
-      cap.value = std::min(cap.value, value);
-      return true;
-    }
-  }
+  // A cap lower than the caps there now, never below the floor; false when it
+  // would change nothing (the ball is as small as it may get).
+  const double value = std::max(factor * s.radius / kRadiusRatio, 2 * min_size_);
+  double now = HUGE_VAL;
+  for (const Cap& cap : d.caps) now = std::min(now, cap.value + kGrowth * std::fabs(cap.arc - s.arc));
+  if (value >= 0.999 * std::min(now, step_at(d, s.arc))) return false;
+  d.dirty = true;
   d.caps.push_back({s.arc, value});
   return true;
+}
+
+void ProtectionPlanner::clamp_radius(const BallRef& b, double radius) {
+  if (b.curve >= 0) {
+    CurveData& d = curves_[b.curve];
+    BallSample& s = d.samples[b.index];
+    s.radius = std::min(s.radius, radius);
+    if (d.c.info.closed && b.index == 0) d.samples.back().radius = s.radius;
+    return;
+  }
+  double& r = corner_radius_[b.corner];
+  r = std::min(r, radius);
+  for (CurveData& d : curves_) {  // the corner's copies at curve ends
+    if (d.start == b.corner) d.samples.front().radius = r;
+    if (d.end == b.corner) d.samples.back().radius = r;
+  }
+}
+
+double ProtectionPlanner::radius_of(const BallRef& b) const {
+  return b.curve < 0 ? corner_radius_[b.corner] : curves_[b.curve].samples[b.index].radius;
+}
+
+void ProtectionPlanner::keep_visible(const BallRef& a, const BallRef& b, double dist) {
+  // A weighted point p is hidden by q when |p - q|^2 < w_q - w_p: it would
+  // vanish from the regular triangulation. Cut the larger ball just enough.
+  const double ra = radius_of(a), rb = radius_of(b);
+  const BallRef& big = ra >= rb ? a : b;
+  const double small = std::min(ra, rb), large = std::max(ra, rb);
+  if (dist * dist > 0.999 * (large * large - small * small)) return;
+  clamp_radius(big, std::sqrt(0.98 * (dist * dist + small * small)));
 }
 
 bool ProtectionPlanner::check_arcs() {
@@ -314,11 +350,14 @@ bool ProtectionPlanner::separate_balls(bool record) {
               // Same level: each pair once, from its first ball.
               if (level[other] == level[k] && other <= static_cast<int>(k)) continue;
               const Ball& o = balls[other];
-              const double need = b.radius + o.radius + kGap * std::min(b.radius, o.radius);
               const double dist = distance(b.center, o.center);
+              if (record) keep_visible(b.ref, o.ref, dist);
+              const double need = b.radius + o.radius + kGap * std::min(b.radius, o.radius);
               if (dist >= need || adjacent(b.ref, o.ref)) continue;
               conflict = true;
               if (record) {
+                // Unresolved: at least neither ball may hold the other's centre.
+                for (const BallRef& r : {b.ref, o.ref}) clamp_radius(r, 0.95 * dist);
                 ++unresolved_pairs_;
                 const std::string what = name(b.ref) + " near " + name(o.ref);
                 if (unresolved_.size() < 20 &&
@@ -348,12 +387,18 @@ void ProtectionPlanner::resolve() {
   // Every round shrinks some ball by a factor < 1 and no ball goes below the
   // minimum size, so the rounds end; the bound is a backstop.
   for (int round = 0; round < 1000; ++round) {
-    for (CurveData& d : curves_) sample_curve(d);
+    for (CurveData& d : curves_) {
+      if (d.dirty) sample_curve(d);
+      d.dirty = false;
+    }
     bool changed = check_arcs();
     changed = separate_balls(false) || changed;
     if (!changed) break;
   }
-  for (CurveData& d : curves_) sample_curve(d);
+  for (CurveData& d : curves_) {
+    if (d.dirty) sample_curve(d);
+    d.dirty = false;
+  }
   unresolved_.clear();
   unresolved_pairs_ = 0;
   separate_balls(true);
@@ -364,17 +409,20 @@ ProtectionPlan ProtectionPlanner::plan() {
   return result();
 }
 
-ProtectionPlan ProtectionPlanner::shrink(const std::vector<BallRef>& balls) {
+bool ProtectionPlanner::shrink(const std::vector<BallRef>& balls, ProtectionPlan& plan) {
+  bool changed = false;
   for (const BallRef& b : balls) {
     if (b.curve >= 0 && (b.curve >= static_cast<int>(curves_.size()) || b.index < 0 ||
                          b.index >= static_cast<int>(curves_[b.curve].samples.size()))) {
       continue;
     }
     if (b.curve < 0 && (b.corner < 0 || b.corner >= static_cast<int>(corners_.size()))) continue;
-    shrink_ball(b, 0.5);
+    changed = shrink_ball(b, 0.5) || changed;
   }
+  if (!changed) return false;
   resolve();
-  return result();
+  plan = result();
+  return true;
 }
 
 ProtectionPlan ProtectionPlanner::result() const {

@@ -67,7 +67,8 @@ struct ProtectionPlan {
   std::vector<CurveProtection> curves;  ///< index = CurveId - 1
   std::vector<double> corner_radius;    ///< index = CornerId - 1
   /// Pairs of balls still violating (B2) when they reached the minimum size,
-  /// named "curve A near curve B" (distinct, at most 20).
+  /// named "curve A near curve B" (distinct, at most 20). Both balls of such
+  /// a pair are cut so that neither holds the other's centre (hiding it).
   std::vector<std::string> unresolved;
   std::size_t unresolved_pairs = 0;
   std::size_t balls = 0;
@@ -94,8 +95,9 @@ class ProtectionPlanner {
   /// Samples every curve and shrinks balls until (B1)-(B3) hold.
   ProtectionPlan plan();
   /// Halves the given balls of the last plan (a refinement found them reaching
-  /// into a patch their feature does not bound) and plans again.
-  ProtectionPlan shrink(const std::vector<BallRef>& balls);
+  /// into a patch their feature does not bound) and plans again into `plan`;
+  /// false (plan untouched) when none of them can shrink any more.
+  bool shrink(const std::vector<BallRef>& balls, ProtectionPlan& plan);
 
  private:
   struct Cap {
@@ -107,6 +109,7 @@ class ProtectionPlanner {
     int start = -1, end = -1;  ///< corner indices (open curves)
     std::vector<Cap> caps;
     std::vector<BallSample> samples;
+    bool dirty = true;  ///< caps or corner radii changed since the last sampling
   };
 
   /// The step size at arc length a of curve j.
@@ -117,6 +120,12 @@ class ProtectionPlanner {
   void sample_curve(CurveData& d);
   /// Shrinks ball b to `factor` of its size; false when it is at the minimum.
   bool shrink_ball(const BallRef& b, double factor);
+  /// Caps the radius of ball b in the final samples (no resampling).
+  void clamp_radius(const BallRef& b, double radius);
+  double radius_of(const BallRef& b) const;
+  /// Cuts the larger of two balls so that it does not hide the other's centre
+  /// in the regular triangulation (only where B1/B2 could not be met).
+  void keep_visible(const BallRef& a, const BallRef& b, double dist);
   /// Shrinks balls whose arcs violate (B3); true if any changed.
   bool check_arcs();
   /// Shrinks balls violating (B2); true if any changed. With `record`, only
