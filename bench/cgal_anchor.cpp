@@ -4,8 +4,6 @@
 
 #include <chrono>
 #include <stdexcept>
-#include <unordered_map>
-#include <vector>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Labeled_mesh_domain_3.h>
@@ -13,13 +11,11 @@
 #include <CGAL/Mesh_criteria_3.h>
 #include <CGAL/Mesh_triangulation_3.h>
 #include <CGAL/Random.h>
-#include <CGAL/exude_mesh_3.h>
 #include <CGAL/make_mesh_3.h>
-#include <CGAL/perturb_mesh_3.h>
 #include <CGAL/version_macros.h>
 
+#include "c3t3_measures.h"
 #include "shapes.h"
-#include "tet_quality.h"
 
 namespace {
 
@@ -30,29 +26,6 @@ using Mesh_domain = CGAL::Labeled_mesh_domain_3<K>;
 using Tr = CGAL::Mesh_triangulation_3<Mesh_domain, CGAL::Default, CGAL::Sequential_tag>::type;
 using C3t3 = CGAL::Mesh_complex_3_in_triangulation_3<Tr>;
 using Mesh_criteria = CGAL::Mesh_criteria_3<Tr>;
-
-/// Cells in the complex as plain arrays, for the shared quality helper.
-rdmesh_bench::MeshQuality complex_quality(const C3t3& c3t3, std::size_t* vertex_count = nullptr) {
-  std::vector<rdmesh_bench::Vec3> vertices;
-  std::vector<rdmesh_bench::Tet> tets;
-  std::unordered_map<Tr::Vertex_handle, int> index;
-  tets.reserve(c3t3.number_of_cells_in_complex());
-  for (auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
-    rdmesh_bench::Tet t{};
-    for (int i = 0; i < 4; ++i) {
-      const Tr::Vertex_handle v = c->vertex(i);
-      auto [it, inserted] = index.emplace(v, static_cast<int>(vertices.size()));
-      if (inserted) {
-        const auto& p = v->point().point();  // weighted point -> bare point
-        vertices.push_back({p.x(), p.y(), p.z()});
-      }
-      t[i] = it->second;
-    }
-    tets.push_back(t);
-  }
-  if (vertex_count != nullptr) *vertex_count = vertices.size();
-  return rdmesh_bench::mesh_quality(vertices, tets);
-}
 
 double seconds_between(std::chrono::steady_clock::time_point a,
                        std::chrono::steady_clock::time_point b) {
@@ -94,37 +67,8 @@ AnchorResult run_cgal_anchor(const std::string& shape_name, double h,
   AnchorResult r;
   r.refine_seconds = seconds_between(t0, t1);
   r.seconds = r.refine_seconds;
-  if (optimize) {
-    const rdmesh_bench::MeshQuality before = complex_quality(c3t3);
-    r.min_dihedral_before_deg = before.min_dihedral_deg;
-    r.below_10_deg_before = before.below_10_deg;
-    // What make_mesh_3(perturb(), exude()) runs after refinement (refine_mesh_3.h):
-    // each optimizer's time limit defaults to the refinement time.
-    const auto t2 = std::chrono::steady_clock::now();
-    CGAL::perturb_mesh_3(c3t3, domain, params::time_limit = r.refine_seconds);
-    const auto t3 = std::chrono::steady_clock::now();
-    r.min_dihedral_perturbed_deg = complex_quality(c3t3).min_dihedral_deg;
-    const auto t4 = std::chrono::steady_clock::now();
-    CGAL::exude_mesh_3(c3t3, params::time_limit = r.refine_seconds);
-    const auto t5 = std::chrono::steady_clock::now();
-    r.perturb_seconds = seconds_between(t2, t3);
-    r.exude_seconds = seconds_between(t4, t5);
-    r.seconds = r.refine_seconds + r.perturb_seconds + r.exude_seconds;
-  }
-  std::size_t vertex_count = 0;
-  const rdmesh_bench::MeshQuality q = complex_quality(c3t3, &vertex_count);
-
-  r.tets = q.tets;
-  r.vertices = vertex_count;
-  r.min_dihedral_deg = q.min_dihedral_deg;
-  r.max_radius_edge = q.max_radius_edge;
-  r.volume = q.volume;
-  r.non_positive = q.non_positive;
-  r.below_10_deg = q.below_10_deg;
-  if (!optimize) {
-    r.min_dihedral_before_deg = q.min_dihedral_deg;
-    r.below_10_deg_before = q.below_10_deg;
-  }
+  if (optimize) rdmesh_bench::perturb_and_exude(c3t3, domain, r);
+  rdmesh_bench::measure_complex(c3t3, optimize, r);
   return r;
 }
 

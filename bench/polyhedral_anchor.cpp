@@ -13,12 +13,12 @@
 
 #include <chrono>
 #include <cmath>
-#include <unordered_map>
+#include <cstdlib>
 
 #include "rdmesh/mesher.h"
 #include "rdmesh/triangle_mesh_check.h"
 #include "rdmesh/triangle_mesh_oracle.h"
-#include "tet_quality.h"
+#include "c3t3_measures.h"
 
 namespace {
 
@@ -29,7 +29,13 @@ using Tr = CGAL::Mesh_triangulation_3<Domain, CGAL::Default, CGAL::Sequential_ta
 using C3t3 = CGAL::Mesh_complex_3_in_triangulation_3<Tr, Domain::Corner_index, Domain::Curve_index>;
 using Criteria = CGAL::Mesh_criteria_3<Tr>;
 
-std::string path_of(const std::string& shape) { return "/work/shared/data/mesh/" + shape.substr(5); }
+/// The file of a "mesh:FILE" shape: in $RDMESH_DATA_DIR/mesh, else the shared
+/// data beside the checkout.
+std::string path_of(const std::string& shape) {
+  const char* env = std::getenv("RDMESH_DATA_DIR");
+  const std::string dir = env != nullptr ? env : std::string(RDMESH_SOURCE_DIR) + "/../shared/data";
+  return dir + "/mesh/" + shape.substr(5);
+}
 
 double seconds_since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
@@ -39,35 +45,24 @@ double seconds_since(std::chrono::steady_clock::time_point t) {
 
 bool is_polyhedral_shape(const std::string& shape) { return shape.rfind("mesh:", 0) == 0; }
 
-RdmeshResult run_rdmesh_polyhedral(const std::string& shape, double h_fraction) {
-  RdmeshResult r;
+RdmeshResult run_rdmesh_polyhedral(const std::string& shape, double h_fraction, bool optimize) {
   const auto t0 = std::chrono::steady_clock::now();
   const auto oracle = rdmesh::TriangleMeshOracle::from_file(path_of(shape));
-  r.setup_seconds = seconds_since(t0);
+  const double setup = seconds_since(t0);
   const double h = h_fraction * oracle->bounding_box().diagonal();
   rdmesh::Criteria criteria;
   criteria.edge_size = criteria.facet_size = criteria.cell_size = rdmesh::ScalarField::uniform(h);
   criteria.facet_distance = h / 10;
   rdmesh::MeshOptions options;
-  options.exudation.enabled = false;
+  options.exudation.enabled = optimize;
   const auto t1 = std::chrono::steady_clock::now();
   const rdmesh::MeshResult result = rdmesh::generate_mesh(*oracle, criteria, options);
-  r.seconds = seconds_since(t1);
-  std::vector<rdmesh_bench::Vec3> vertices;
-  for (const rdmesh::Point3& p : result.mesh.vertices) vertices.push_back({p.x, p.y, p.z});
-  const auto q = rdmesh_bench::mesh_quality(vertices, result.mesh.tets);
-  r.tets = result.mesh.tets.size();
-  r.vertices = vertices.size();
-  r.min_dihedral_deg = q.min_dihedral_deg;
-  r.max_radius_edge = q.max_radius_edge;
-  r.volume = q.volume;
-  r.non_positive = q.non_positive;
-  r.below_10_deg = q.below_10_deg;
-  r.guard_rejections = result.stats.guard_rejections;
+  RdmeshResult r = measure_rdmesh(result, seconds_since(t1));
+  r.setup_seconds = setup;
   return r;
 }
 
-AnchorResult run_cgal_polyhedral(const std::string& shape, double h_fraction) {
+AnchorResult run_cgal_polyhedral(const std::string& shape, double h_fraction, bool optimize) {
   rdmesh::TriangleSoup soup = rdmesh::read_triangle_mesh(path_of(shape));
   rdmesh::orient_triangle_mesh(soup, shape, true);
   std::vector<K::Point_3> points;
@@ -89,29 +84,9 @@ AnchorResult run_cgal_polyhedral(const std::string& shape, double h_fraction) {
                           params::cell_size = h);
   C3t3 c3t3 = CGAL::make_mesh_3<C3t3>(domain, criteria, params::no_perturb(), params::no_exude());
   AnchorResult r;
-  r.seconds = seconds_since(t0);
-  std::vector<rdmesh_bench::Vec3> vertices;
-  std::vector<rdmesh_bench::Tet> tets;
-  std::unordered_map<Tr::Vertex_handle, int> index;
-  for (auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c) {
-    rdmesh_bench::Tet t{};
-    for (int i = 0; i < 4; ++i) {
-      auto [it, inserted] = index.emplace(c->vertex(i), static_cast<int>(vertices.size()));
-      if (inserted) {
-        const auto& p = c->vertex(i)->point().point();
-        vertices.push_back({p.x(), p.y(), p.z()});
-      }
-      t[i] = it->second;
-    }
-    tets.push_back(t);
-  }
-  const auto q = rdmesh_bench::mesh_quality(vertices, tets);
-  r.tets = tets.size();
-  r.vertices = vertices.size();
-  r.min_dihedral_deg = q.min_dihedral_deg;
-  r.max_radius_edge = q.max_radius_edge;
-  r.volume = q.volume;
-  r.non_positive = q.non_positive;
-  r.below_10_deg = q.below_10_deg;
+  r.refine_seconds = seconds_since(t0);
+  r.seconds = r.refine_seconds;
+  if (optimize) rdmesh_bench::perturb_and_exude(c3t3, domain, r);
+  rdmesh_bench::measure_complex(c3t3, optimize, r);
   return r;
 }

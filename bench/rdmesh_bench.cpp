@@ -85,8 +85,9 @@ Wire run_side_inline(Side side, const Case& c) {
   Wire w;
   try {
     if (side == Side::kRdmesh) {
-      const RdmeshResult r = is_polyhedral_shape(c.shape) ? run_rdmesh_polyhedral(c.shape, c.h)
-                                                          : run_rdmesh(c.shape, c.h, g_optimize);
+      const RdmeshResult r = is_polyhedral_shape(c.shape)
+                                 ? run_rdmesh_polyhedral(c.shape, c.h, g_optimize)
+                                 : run_rdmesh(c.shape, c.h, g_optimize);
       w.tets = r.tets;
       w.vertices = r.vertices;
       w.seconds = r.seconds;
@@ -104,7 +105,7 @@ Wire run_side_inline(Side side, const Case& c) {
     } else {
       const AnchorResult r =
           is_polyhedral_shape(c.shape)
-              ? run_cgal_polyhedral(c.shape, c.h)
+              ? run_cgal_polyhedral(c.shape, c.h, g_optimize)
               : run_cgal_anchor(c.shape, c.h, g_cgal_relative_error, g_optimize);
       w.tets = r.tets;
       w.vertices = r.vertices;

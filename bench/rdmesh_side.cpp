@@ -11,6 +11,31 @@
 #include "shapes.h"
 #include "tet_quality.h"
 
+RdmeshResult measure_rdmesh(const rdmesh::MeshResult& result, double seconds) {
+  const rdmesh::TetMesh& mesh = result.mesh;
+  std::vector<rdmesh_bench::Vec3> vertices;
+  vertices.reserve(mesh.vertices.size());
+  for (const rdmesh::Point3& p : mesh.vertices) vertices.push_back({p.x, p.y, p.z});
+  const rdmesh_bench::MeshQuality q = rdmesh_bench::mesh_quality(vertices, mesh.tets);
+
+  RdmeshResult r;
+  r.tets = mesh.tets.size();
+  r.vertices = mesh.vertices.size();
+  r.seconds = seconds;
+  r.min_dihedral_deg = q.min_dihedral_deg;
+  r.max_radius_edge = q.max_radius_edge;
+  r.volume = q.volume;
+  r.non_positive = q.non_positive;
+  r.guard_rejections = result.stats.guard_rejections;
+  r.below_10_deg = q.below_10_deg;
+  const rdmesh::ExudationStats& ex = result.exudation;
+  r.min_dihedral_before_deg = ex.ran ? ex.min_dihedral_before_deg : q.min_dihedral_deg;
+  r.below_10_deg_before = ex.ran ? ex.histogram_before[0] + ex.histogram_before[1] : q.below_10_deg;
+  r.optimize_seconds = ex.seconds;
+  r.refine_seconds = r.seconds - ex.seconds;
+  return r;
+}
+
 RdmeshResult run_rdmesh(const std::string& shape_name, double h, bool optimize) {
   const rdmesh_bench::Shape* shape = rdmesh_bench::find_shape(shape_name);
   if (shape == nullptr) throw std::invalid_argument("unknown shape: " + shape_name);
@@ -39,27 +64,7 @@ RdmeshResult run_rdmesh(const std::string& shape_name, double h, bool optimize) 
   const rdmesh::MeshResult result = rdmesh::generate_mesh(oracle, criteria, options);
   const auto t3 = std::chrono::steady_clock::now();
 
-  const rdmesh::TetMesh& mesh = result.mesh;
-  std::vector<rdmesh_bench::Vec3> vertices;
-  vertices.reserve(mesh.vertices.size());
-  for (const rdmesh::Point3& p : mesh.vertices) vertices.push_back({p.x, p.y, p.z});
-  const rdmesh_bench::MeshQuality q = rdmesh_bench::mesh_quality(vertices, mesh.tets);
-
-  RdmeshResult r;
-  r.tets = mesh.tets.size();
-  r.vertices = mesh.vertices.size();
-  r.seconds = std::chrono::duration<double>(t3 - t2).count();
+  RdmeshResult r = measure_rdmesh(result, std::chrono::duration<double>(t3 - t2).count());
   r.setup_seconds = std::chrono::duration<double>(t1 - t0).count();
-  r.min_dihedral_deg = q.min_dihedral_deg;
-  r.max_radius_edge = q.max_radius_edge;
-  r.volume = q.volume;
-  r.non_positive = q.non_positive;
-  r.guard_rejections = result.stats.guard_rejections;
-  r.below_10_deg = q.below_10_deg;
-  const rdmesh::ExudationStats& ex = result.exudation;
-  r.min_dihedral_before_deg = ex.ran ? ex.min_dihedral_before_deg : q.min_dihedral_deg;
-  r.below_10_deg_before = ex.ran ? ex.histogram_before[0] + ex.histogram_before[1] : q.below_10_deg;
-  r.optimize_seconds = ex.seconds;
-  r.refine_seconds = r.seconds - ex.seconds;
   return r;
 }

@@ -22,6 +22,13 @@ struct RdmeshResult {
   double optimize_seconds = 0;         ///< exudation (ExudationStats::seconds)
 };
 
+namespace rdmesh {
+struct MeshResult;
+}
+
+/// The measures of a finished run (`seconds`: its wall time).
+RdmeshResult measure_rdmesh(const rdmesh::MeshResult& result, double seconds);
+
 /// Meshes `shape` ("sphere" | "torus", see shapes.h) with rdmesh::generate_mesh and
 /// the same criteria as run_cgal_anchor; sliver exudation only when `optimize`.
 /// Throws std::invalid_argument for an unknown shape.
