@@ -40,6 +40,7 @@ int run(const rdmesh::cli::Options& opt) {
   mesh_options.progress = [&progress](const Progress& p) { progress(p); };
   mesh_options.exudation = cli::exudation_options(opt);
   mesh_options.features = opt.features;
+  mesh_options.surface_only = opt.surface_only;
   MeshResult result = generate_mesh(*input.oracle, criteria, mesh_options);
   progress.finish();
 

@@ -60,6 +60,9 @@ void add_options(CLI::App& app, Options& opt) {
           std::map<std::string, FeatureMethod>{{"protect", FeatureMethod::kProtectingBalls},
                                                {"refine", FeatureMethod::kRefineEdges}},
           CLI::ignore_case));
+  app.add_flag("--surface-only", opt.surface_only,
+               "Mesh the surface patches only (triangles, feature edges, corners; no "
+               "tetrahedra); a triangle-mesh input may then be open");
   app.add_option("--feature-angle", opt.feature_angle,
                  "Triangle-mesh input: an edge is a sharp curve when its two triangles' normals "
                  "turn by more than this, degrees (default 60)")
@@ -86,7 +89,15 @@ LoadedInput load_input(const Options& opt) {
   if (ext == ".off" || ext == ".stl" || ext == ".obj" || ext == ".ply") {
     TriangleMeshOptions options;
     options.feature_angle_degrees = opt.feature_angle;
-    return {TriangleMeshOracle::from_file(path, options), {}};
+    options.surface_only = opt.surface_only;
+    try {
+      return {TriangleMeshOracle::from_file(path, options), {}};
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      if (opt.surface_only || what.find("not closed") == std::string::npos) throw;
+      throw InputError(what + " (a volume needs closed surfaces; --surface-only meshes an open "
+                              "surface without its volume)");
+    }
   }
   throw InputError(path, "unknown input extension '" + ext +
                                "' (expected .json, .step, .stp, .brep, .iges, .igs, .off, .stl, .obj or .ply)");
@@ -226,7 +237,9 @@ std::string format_run_summary(const Options& opt, const RefinementStats& stats,
   }
   s << "guard: " << (stats.guard_fired() ? "FIRED" : "not fired") << " ("
     << stats.guard_rejections << " points refused)\n";
-  if (exudation.ran) {
+  if (opt.surface_only) {
+    s << "exudation: none (surface only)\n";
+  } else if (exudation.ran) {
     s << "exudation: min dihedral " << exudation.min_dihedral_before_deg << " -> "
       << exudation.min_dihedral_after_deg << " deg, tets below 10 deg "
       << exudation.histogram_before[0] + exudation.histogram_before[1] << " -> "

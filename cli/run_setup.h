@@ -29,6 +29,7 @@ struct Options {
   bool heal = false;  ///< --heal: OpenCASCADE shape healing of CAD input
   double feature_angle = 60;  ///< --feature-angle DEG: sharp-edge threshold of triangle-mesh input
   FeatureMethod features = FeatureMethod::kProtectingBalls;  ///< --features protect|refine
+  bool surface_only = false;  ///< --surface-only: triangles only, open meshes accepted
 };
 
 void add_options(CLI::App& app, Options& opt);

@@ -1,8 +1,11 @@
 // Output: the cells of D|O (label != 0), the facets of D|S (restricted
 // facets), each facet once, oriented towards its side of smaller label, and
-// the edges of D|L in curve order with the corners.
+// the edges of D|L in curve order with the corners. Surface only: the
+// restricted facets alone, oriented consistently piece by piece.
 #include <unordered_map>
 
+#include "rdmesh/errors.h"
+#include "rdmesh/triangle_mesh_check.h"
 #include "refiner.h"
 
 namespace rdmesh::detail {
@@ -22,6 +25,11 @@ TetMesh Refiner::extract_mesh() {
     return idx;
   };
 
+  if (options_.surface_only) {
+    extract_surface(mesh, index_of);
+    extract_features(mesh);
+    return mesh;
+  }
   for (auto c = tr_.finite_cells_begin(); c != tr_.finite_cells_end(); ++c) {
     const int label = c->info().label;
     if (label == kOutside.value) continue;
@@ -46,6 +54,27 @@ TetMesh Refiner::extract_mesh() {
   }
   extract_features(mesh);
   return mesh;
+}
+
+template <class IndexOf>
+void Refiner::extract_surface(TetMesh& mesh, IndexOf& index_of) {
+  for (auto f = tr_.finite_facets_begin(); f != tr_.finite_facets_end(); ++f) {
+    const Cell_handle c = f->first;
+    const int i = f->second;
+    const int patch = c->info().facet_patch[i];
+    if (patch == 0) continue;
+    mesh.triangles.push_back({index_of(c->vertex((i + 1) & 3)), index_of(c->vertex((i + 2) & 3)),
+                              index_of(c->vertex((i + 3) & 3))});
+    mesh.triangle_patch.push_back(PatchId{patch});
+  }
+  // Consistent orientation across shared edges (closed pieces outward); a
+  // non-manifold or non-orientable result keeps the triangles as they are.
+  TriangleSoup soup{mesh.vertices, mesh.triangles};
+  try {
+    orient_triangle_mesh(soup, "", /*require_closed=*/false);
+    mesh.triangles = std::move(soup.triangles);
+  } catch (const InputError&) {
+  }
 }
 
 void Refiner::extract_features(TetMesh& mesh) {

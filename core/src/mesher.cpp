@@ -19,8 +19,13 @@ double seconds_since(std::chrono::steady_clock::time_point t) {
 }
 
 /// An empty mesh is an error, a patch without triangles a warning in the stats.
-void check_output(const DomainOracle& oracle, MeshResult& result) {
-  if (result.mesh.tets.empty()) {
+void check_output(const DomainOracle& oracle, bool surface_only, MeshResult& result) {
+  if (surface_only && result.mesh.triangles.empty()) {
+    throw OracleError("surface refinement produced no triangle: the oracle's " +
+                      std::to_string(result.stats.initial_points) +
+                      " initial points do not capture the surface");
+  }
+  if (!surface_only && result.mesh.tets.empty()) {
     throw OracleError("refinement produced no tetrahedron: the oracle's " +
                       std::to_string(result.stats.initial_points) +
                       " initial points do not capture the domain");
@@ -102,7 +107,7 @@ MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& criteria,
   }
 
   MeshResult result;
-  if (options.exudation.enabled) {
+  if (options.exudation.enabled && !options.surface_only) {
     const detail::ChainEdges chains = refiner->chain_edges();
     result.exudation =
         detail::exude_slivers(refiner->triangulation(), criteria, options.exudation, &chains);
@@ -119,7 +124,7 @@ MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& criteria,
   result.stats.seconds_initial = initial;
   result.stats.seconds_refine = refine;
   result.stats.seconds_extract = seconds_since(t);
-  check_output(oracle, result);
+  check_output(oracle, options.surface_only, result);
   return result;
 }
 

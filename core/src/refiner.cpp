@@ -65,6 +65,18 @@ void Refiner::insert_initial_points() {
       ++stats_.initial_points;
     }
   }
+  if (tr_.dimension() < 3 && options_.surface_only) {
+    // A flat surface: the corners of a box well around the domain give the
+    // triangulation its third dimension. Far from the surface, their Voronoi
+    // cells leave it as soon as it is sampled (R3 removes them from D|S).
+    const Box3 box = oracle_.bounding_box();
+    const Point3 c = box.center();
+    const double r = box.diagonal();
+    for (int k = 0; k < 8; ++k) {
+      const Point3 p{c.x + (k & 1 ? r : -r), c.y + (k & 2 ? r : -r), c.z + (k & 4 ? r : -r)};
+      hint = tr_.insert(to_weighted(p), hint)->cell();
+    }
+  }
   if (tr_.dimension() < 3) {
     throw OracleError("the oracle's initial points span no volume (" +
                       std::to_string(stats_.initial_points) +

@@ -141,6 +141,9 @@ class Refiner {
   void report_progress();
   /// Appends the edges of D|L and the corner vertices (after cells and facets).
   void extract_features(TetMesh& mesh);
+  /// Surface only: every restricted facet once, oriented consistently.
+  template <class IndexOf>
+  void extract_surface(TetMesh& mesh, IndexOf& index_of);
   /// Counts a point refused by the minimum-size guard and names the features involved.
   void record_guard(const VertexInfo& candidate, const VertexInfo& nearest);
   std::string describe(const VertexInfo& v) const;

@@ -37,7 +37,9 @@ void Refiner::init_cell(Cell_handle c) {
   const bool finite_center = std::isfinite(info.circumcenter.x) &&
                              std::isfinite(info.circumcenter.y) &&
                              std::isfinite(info.circumcenter.z);
-  info.label = finite_center ? oracle_.locate(info.circumcenter).value : kOutside.value;
+  // Surface only: no cell is in the mesh, labels are never needed.
+  info.label = finite_center && !options_.surface_only ? oracle_.locate(info.circumcenter).value
+                                                       : kOutside.value;
 }
 
 namespace {
@@ -71,6 +73,10 @@ bool Refiner::dual_segment(Cell_handle c, int i, Point3& a, Point3& b) const {
   // facet's own orthocenter keeps every digit even when a nearly flat cell's
   // center is 1e16 away; beyond the clip box the domain is empty, so only the
   // part inside it goes to the oracle.
+  const Cell_handle n = c->neighbor(i);
+  // A facet through the infinite vertex (both its cells infinite) has no dual
+  // edge in the finite space.
+  if (tr_.is_infinite(c) && tr_.is_infinite(n)) return false;
   const Vertex_handle v[3] = {c->vertex((i + 1) & 3), c->vertex((i + 2) & 3),
                               c->vertex((i + 3) & 3)};
   const Point3 q[3] = {to_point3(v[0]->point()), to_point3(v[1]->point()), to_point3(v[2]->point())};
@@ -93,7 +99,6 @@ bool Refiner::dual_segment(Cell_handle c, int i, Point3& a, Point3& b) const {
     }
     return dot(cell->info().circumcenter - origin, normal);
   };
-  const Cell_handle n = c->neighbor(i);
   const double sc = end_of(c, n), sn = end_of(n, c);
   if (std::isnan(sc) || std::isnan(sn)) return false;  // a flat cell without a center
   double t0, t1;
@@ -110,7 +115,9 @@ void Refiner::update_facet(Cell_handle c, int i) {
   const int j = n->index(c);
   c->info().facet_patch[i] = 0;
   n->info().facet_patch[j] = 0;
-  if (c->info().label == n->info().label) return;
+  // Equal labels: no crossing (or an even number, which refinement removes).
+  // Surface only, every dual edge is asked: an open patch has no sides.
+  if (c->info().label == n->info().label && !options_.surface_only) return;
 
   Point3 a, b;
   if (!dual_segment(c, i, a, b)) return;

@@ -182,16 +182,21 @@ void write_entities(std::ostream& out, const TetMesh& mesh, const Levels& levels
   out << "$EndEntities\n";
 }
 
-void write_nodes(std::ostream& out, const TetMesh& mesh, const std::vector<Label>& volumes) {
+/// All nodes in one block, on the first volume entity (the first surface one
+/// for a surface-only mesh).
+void write_nodes(std::ostream& out, const TetMesh& mesh, const Levels& levels) {
   const std::size_t n = mesh.vertices.size();
   if (n == 0) {
     out << "$Nodes\n0 0 0 0\n$EndNodes\n";
     return;
   }
-  if (volumes.empty()) {
-    throw InternalError("write_gmsh41: the mesh has vertices but no subdomain to classify them on");
+  const int dim = !levels[3].labels.empty() ? 3 : 2;
+  if (levels[dim].labels.empty()) {
+    throw InternalError("write_gmsh41: the mesh has vertices but no subdomain or patch to "
+                        "classify them on");
   }
-  out << "$Nodes\n1 " << n << " 1 " << n << "\n3 " << volumes.front().id << " 0 " << n << '\n';
+  out << "$Nodes\n1 " << n << " 1 " << n << '\n'
+      << dim << ' ' << levels[dim].labels.front().id << " 0 " << n << '\n';
   std::string line;
   for (std::size_t i = 1; i <= n; ++i) {
     line.clear();
@@ -253,7 +258,7 @@ void write_gmsh41(const TetMesh& mesh, std::ostream& out) {
   out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
   write_physical_names(out, levels);
   write_entities(out, mesh, levels);
-  write_nodes(out, mesh, levels[3].labels);
+  write_nodes(out, mesh, levels);
 
   std::vector<std::array<int, 1>> corner_elements;
   corner_elements.reserve(mesh.corner_vertices.size());

@@ -89,10 +89,15 @@ nlohmann::json to_json(const QualityReport& r) {
 
 std::string format_summary(const QualityReport& r) {
   std::string s;
-  s += printf_string("Mesh: %zu vertices, %zu tetrahedra, %zu boundary triangles\n", r.vertices,
-                     r.tets, r.triangles);
-  s += printf_string("Dihedral angles: min %.2f deg, max %.2f deg; max radius-edge %.3f\n",
-                     r.min_dihedral_deg, r.max_dihedral_deg, r.max_radius_edge);
+  const bool surface = r.tets == 0;  // a surface-only mesh
+  if (surface) {
+    s += printf_string("Surface mesh: %zu vertices, %zu triangles\n", r.vertices, r.triangles);
+  } else {
+    s += printf_string("Mesh: %zu vertices, %zu tetrahedra, %zu boundary triangles\n",
+                       r.vertices, r.tets, r.triangles);
+    s += printf_string("Dihedral angles: min %.2f deg, max %.2f deg; max radius-edge %.3f\n",
+                       r.min_dihedral_deg, r.max_dihedral_deg, r.max_radius_edge);
+  }
   if (r.inverted_tets > 0)
     s += printf_string("WARNING: %zu inverted or flat tets\n", r.inverted_tets);
   s += printf_string("Boundary: Euler characteristic %d, max distance to patches %s",
@@ -102,9 +107,12 @@ std::string format_summary(const QualityReport& r) {
     s += printf_string(" (%zu projections failed)", r.projection_failures);
   }
   s += '\n';
-  s += printf_string("  %-8s %-24s %12s %16s\n", "subdom", "name", "tets", "volume");
-  for (const SubdomainStats& d : r.subdomains) {
-    s += printf_string("  %-8d %-24s %12zu %16.6g\n", d.id.value, d.name.c_str(), d.tets, d.volume);
+  if (!surface) {
+    s += printf_string("  %-8s %-24s %12s %16s\n", "subdom", "name", "tets", "volume");
+    for (const SubdomainStats& d : r.subdomains) {
+      s += printf_string("  %-8d %-24s %12zu %16.6g\n", d.id.value, d.name.c_str(), d.tets,
+                         d.volume);
+    }
   }
   s += printf_string("  %-8s %-24s %12s %6s %12s\n", "patch", "name", "triangles", "euler",
                      "max dist");

@@ -45,7 +45,8 @@ TriangleMeshOracle::EdgeFlags TriangleMeshOracle::sharp_edges(
   for (int t = 0; t < n; ++t) {
     for (int k = 0; k < 3; ++k) {
       const int u = neighbors[t][k];
-      sharp[t][k] = u >= 0 && dot(normals[t], normals[u]) < limit;
+      // A border edge (surface-only input) is a feature: the mesh's border follows it.
+      sharp[t][k] = u >= 0 ? dot(normals[t], normals[u]) < limit : options_.surface_only;
     }
   }
   return sharp;
@@ -57,8 +58,9 @@ void TriangleMeshOracle::build_features(const std::vector<std::array<int, 3>>& n
   std::vector<SharpEdge> edges;
   for (int t = 0; t < n; ++t) {
     for (int k = 0; k < 3; ++k) {
-      if (sharp[t][k] && t < neighbors[t][k]) {
-        edges.push_back({mesh_.triangles[t][k], mesh_.triangles[t][(k + 1) % 3], t, neighbors[t][k]});
+      const int u = neighbors[t][k];
+      if (sharp[t][k] && (u < 0 || t < u)) {
+        edges.push_back({mesh_.triangles[t][k], mesh_.triangles[t][(k + 1) % 3], t, u < 0 ? t : u});
       }
     }
   }

@@ -20,8 +20,9 @@ TriangleMeshOracle::TriangleMeshOracle(TriangleSoup soup, const std::string& fil
                                " is not in [0, 180] degrees");
   }
   validate_soup(mesh_, file);
-  const TriangleMeshTopology topo = orient_triangle_mesh(mesh_, file, /*require_closed=*/true);
-  if (topo.component_count > kMaxComponents) {
+  const TriangleMeshTopology topo =
+      orient_triangle_mesh(mesh_, file, /*require_closed=*/!options_.surface_only);
+  if (!options_.surface_only && topo.component_count > kMaxComponents) {
     throw InputError(file, std::to_string(topo.component_count) + " closed components (at most " +
                                std::to_string(kMaxComponents) + ")");
   }
@@ -39,7 +40,11 @@ TriangleMeshOracle::TriangleMeshOracle(TriangleSoup soup, const std::string& fil
   tolerance_ = 1e-10 * diag;
   bvh_ = std::make_unique<TriangleBvh>(mesh_.points, mesh_.triangles);
   triangle_component_ = topo.component;
-  build_subdomains(topo.component_count);
+  if (options_.surface_only) {
+    component_parent_.assign(topo.component_count, -1);  // no subdomain, no nesting
+  } else {
+    build_subdomains(topo.component_count);
+  }
   const EdgeFlags sharp = sharp_edges(topo.neighbors);
   build_patches(topo.neighbors, sharp);
   build_features(topo.neighbors, sharp);
@@ -114,7 +119,7 @@ void TriangleMeshOracle::build_patches(const std::vector<std::array<int, 3>>& ne
     }
     std::sort(members.begin(), members.end());
     const int c = triangle_component_[seed];
-    const int outer = component_parent_[c] + 1, inner = c + 1;
+    const int outer = component_parent_[c] + 1, inner = options_.surface_only ? 0 : c + 1;
     patch_infos_.push_back({id, "patch_" + std::to_string(id.value),
                             SubdomainId(std::min(outer, inner)),
                             SubdomainId(std::max(outer, inner))});

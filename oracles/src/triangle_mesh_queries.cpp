@@ -79,7 +79,7 @@ bool TriangleMeshOracle::ray_parity(const Point3& p, int dir, int skip, bool for
 }
 
 SubdomainId TriangleMeshOracle::locate(const Point3& p) const {
-  if (!mesh_box_.contains(p)) return kOutside;
+  if (options_.surface_only || !mesh_box_.contains(p)) return kOutside;
   unsigned char inside[kMaxComponents];
   // First the direction that leaves the box soonest.
   const double gaps[6] = {mesh_box_.hi.x - p.x, p.x - mesh_box_.lo.x, mesh_box_.hi.y - p.y,

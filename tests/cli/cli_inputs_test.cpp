@@ -41,7 +41,25 @@ TEST(CliInputs, OpenTriangleSurfaceIsRejected) {
   const CliRun run = run_cli("open.off -o out.msh", dir.path());
   EXPECT_EQ(run.exit_code, 2) << run.output;
   EXPECT_NE(run.output.find("open.off"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("--surface-only"), std::string::npos) << "the error names the way out";
   EXPECT_FALSE(std::filesystem::exists(dir.file("out.msh")));
+}
+
+TEST(CliInputs, SurfaceOnlyMeshesAnOpenSurface) {
+  ScratchDir dir;
+  // A unit square in two triangles, open along its four sides.
+  dir.write("square.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n");
+  const CliRun run =
+      run_cli("square.off --surface-only --size 0.2 -o out.mesh --report out.json", dir.path());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_NE(run.output.find("Surface mesh:"), std::string::npos) << run.output;
+  const nlohmann::json r = read_json(dir.file("out.json"));
+  EXPECT_EQ(r.at("tets"), 0);
+  EXPECT_GT(r.at("triangles").get<int>(), 10);
+  EXPECT_EQ(r.at("boundary_euler_characteristic"), 1) << "a disk";
+  ASSERT_EQ(r.at("curves").size(), 4u) << "its four sides";
+  for (const auto& c : r.at("curves")) EXPECT_TRUE(c.at("is_chain").get<bool>()) << c.at("name");
+  EXPECT_EQ(r.at("corners_present"), 4);
 }
 
 TEST(CliInputs, CorruptStepFileIsRejected) {

@@ -36,6 +36,34 @@ TriangleSoup join(TriangleSoup a, const TriangleSoup& b) {
   return a;
 }
 
+TEST(TriangleMeshOracle, SurfaceOnlyAcceptsAnOpenBoxAndItsBorderIsACurve) {
+  // A box without its top (two triangles of the +z face removed): open.
+  TriangleSoup open = box_soup({0, 0, 0}, {1, 1, 1});
+  open.triangles.erase(open.triangles.begin() + 2, open.triangles.begin() + 4);
+  EXPECT_THROW(TriangleMeshOracle(open, "open"), InputError);
+  const TriangleMeshOracle o(open, "open", {.surface_only = true});
+  EXPECT_TRUE(o.subdomains().empty());
+  EXPECT_EQ(o.locate({0.5, 0.5, 0.5}), kOutside);
+  EXPECT_EQ(o.patches().size(), 5u);
+  for (const PatchInfo& p : o.patches()) {
+    EXPECT_EQ(p.side_a, kOutside);
+    EXPECT_EQ(p.side_b, kOutside);
+  }
+  // The 8 crease edges of the remaining faces plus the 4 border edges: the
+  // border's corners are kinks (90 degrees), so 12 curves between 8 corners.
+  EXPECT_EQ(o.sharp_edge_count(), 12);
+  EXPECT_EQ(o.curves().size(), 12u);
+  EXPECT_EQ(o.corners().size(), 8u);
+  std::size_t border_curves = 0;
+  for (const CurveInfo& c : o.curves()) border_curves += c.patches.size() == 1 ? 1 : 0;
+  EXPECT_EQ(border_curves, 4u) << "each border edge bounds one patch";
+  // Any segment through a wall crosses it, whatever the (absent) labels say.
+  const auto hit = o.intersect({0.5, 0.5, 0.5}, {0.5, 0.5, -1});
+  ASSERT_TRUE(hit.has_value());
+  EXPECT_NEAR(hit->point.z, 0.0, 1e-12);
+  EXPECT_FALSE(o.intersect({0.5, 0.5, 0.5}, {0.5, 0.5, 2}).has_value()) << "through the open top";
+}
+
 TEST(TriangleMeshOracle, CubeFeatures) {
   const TriangleMeshOracle o(box_soup({0, 0, 0}, {1, 1, 1}), "cube");
   EXPECT_EQ(o.subdomains().size(), 1u);

@@ -41,6 +41,14 @@ struct MeshOptions {
   /// Sliver exudation after refinement (on by default).
   ExudationOptions exudation;
   FeatureMethod features = FeatureMethod::kProtectingBalls;
+  /// Mesh the patches only (D|S and D|L, no tetrahedra): every facet whose
+  /// dual Voronoi edge crosses a patch is restricted, whatever the labels at
+  /// its ends, so open surfaces work (the oracle's intersect() must then find
+  /// a crossing of any segment that crosses a patch, as TriangleMeshOracle's
+  /// does). Rules R1-R4 only; no cell label, no exudation. The output has no
+  /// tetrahedra; its triangles are oriented consistently on each connected,
+  /// orientable piece.
+  bool surface_only = false;
 };
 
 /// What refinement did, for the report.
@@ -86,8 +94,8 @@ struct MeshResult {
 /// Runs Delaunay refinement on `oracle` until every rule R3-R5 is satisfied
 /// (or the guard stops it) and returns the restricted mesh D|O with D|S.
 /// Throws InputError for invalid criteria, OracleError when the oracle fails
-/// or the result has no tetrahedron at all (the oracle's initial points do not
-/// capture the domain).
+/// or the result has no tetrahedron at all (no triangle at all with
+/// surface_only: the oracle's initial points do not capture the domain).
 MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& criteria,
                          const MeshOptions& options = {});
 

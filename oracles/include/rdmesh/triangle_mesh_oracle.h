@@ -50,6 +50,12 @@ struct TriangleMeshOptions {
   double feature_angle_degrees = 60;
   /// Reject self-intersecting inputs (costs a BVH pass with exact predicates).
   bool check_self_intersections = true;
+  /// A surface without a volume: open (or closed) components are accepted,
+  /// there is no subdomain (locate() is kOutside everywhere), every patch has
+  /// kOutside on both sides, and the border edges of open components are
+  /// sharp (they become curves, so the mesh's border follows them). For
+  /// MeshOptions::surface_only.
+  bool surface_only = false;
 };
 
 class TriangleMeshOracle final : public DomainOracle {
