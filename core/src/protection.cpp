@@ -151,8 +151,10 @@ void ProtectionPlanner::sample_curve(CurveData& d) {
     const double mid = std::clamp(0.5 * (a0 + a1), 0.0, d.length);
     d.samples.push_back(sample(mid, kRadiusRatio * std::min(step0, step_at(d, mid))));
   } else {
-    // March with the local step, then scale the positions down so that the
-    // last lands exactly at a1 (never stretched: chords stay within steps).
+    // March with the local step; the last (up to three) steps share what is
+    // left to a1 equally, so that the last sample lands exactly there while
+    // every other sample keeps the position its caps were measured at (a
+    // uniform rescaling would shift a long curve's far samples away from them).
     std::vector<double> arcs{a0}, steps;
     while (arcs.back() < a1) {
       // Shortened so that the jittered chords below stay within the step.
@@ -160,13 +162,17 @@ void ProtectionPlanner::sample_curve(CurveData& d) {
       arcs.push_back(arcs.back() + steps.back());
     }
     const std::size_t min_steps = info.closed ? 3 : 1;
-    while (steps.size() < min_steps) {  // too short a closed curve: equal thirds
+    if (steps.size() < min_steps) {  // too short a closed curve: equal thirds
       steps.assign(min_steps, span / min_steps);
       arcs.assign(1, a0);
       for (double s : steps) arcs.push_back(arcs.back() + s);
     }
-    const double f = span / (arcs.back() - a0);
-    const std::size_t n = steps.size();
+    const std::size_t n = steps.size(), m = std::min<std::size_t>(n, 3);
+    const double from = arcs[n - m], share = (a1 - from) / static_cast<double>(m);
+    for (std::size_t k = n - m + 1; k <= n; ++k) {
+      arcs[k] = from + share * static_cast<double>(k - (n - m));
+      steps[k - 1] = share;
+    }
     for (std::size_t k = 0; k <= n; ++k) {
       if (info.closed && k == n) break;  // the first sample again, added below
       double s = k < n ? steps[k] : steps[n - 1];
@@ -176,9 +182,9 @@ void ProtectionPlanner::sample_curve(CurveData& d) {
       // symmetric features sampled alike (two meridians at the same heights)
       // would give co-spherical ball quadruples, flat cells whose orthocenter
       // is undefined. The margins of B1 and B2 absorb the move.
-      double a = a0 + f * (arcs[k] - a0);
-      if (k > 0 && k < n) a += kJitter * f * s * jitter(curve_index(d), k);
-      d.samples.push_back(sample(a, kRadiusRatio * f * s));
+      double a = arcs[k];
+      if (k > 0 && k < n) a += kJitter * std::min(steps[k - 1], steps[k]) * jitter(curve_index(d), k);
+      d.samples.push_back(sample(a, kRadiusRatio * s));
     }
     if (info.closed) {
       BallSample last = d.samples.front();
