@@ -11,16 +11,10 @@
 #include <unordered_map>
 
 #include "rdmesh/errors.h"
+#include "simplex_geometry.h"
 
 namespace rdmesh::detail {
 namespace {
-
-double squared_distance_to_segment(Point3 x, Point3 a, Point3 b) {
-  const Point3 ab = b - a;
-  const double len2 = squared_norm(ab);
-  const double s = len2 > 0 ? std::clamp(dot(x - a, ab) / len2, 0.0, 1.0) : 0.0;
-  return squared_norm(a + s * ab - x);
-}
 
 /// A fixed pseudo-random number in [-1, 1] for sample k of curve j.
 double jitter(std::size_t j, std::size_t k) {

@@ -12,18 +12,9 @@
 
 #include "rdmesh/errors.h"
 #include "refiner.h"
+#include "simplex_geometry.h"
 
 namespace rdmesh::detail {
-namespace {
-
-double squared_distance_to_segment(Point3 x, Point3 a, Point3 b) {
-  const Point3 ab = b - a;
-  const double len2 = squared_norm(ab);
-  const double s = len2 > 0 ? std::clamp(dot(x - a, ab) / len2, 0.0, 1.0) : 0.0;
-  return squared_norm(a + s * ab - x);
-}
-
-}  // namespace
 
 void Refiner::load_curves() {
   corners_ = oracle_.corners();

@@ -69,6 +69,14 @@ inline Point3 triangle_circumcenter(Point3 a, Point3 b, Point3 c) {
   return a + (1.0 / (2.0 * nn)) * num;
 }
 
+/// Squared distance from x to segment [a, b].
+inline double squared_distance_to_segment(Point3 x, Point3 a, Point3 b) {
+  const Point3 ab = b - a;
+  const double len2 = squared_norm(ab);
+  const double s = len2 > 0 ? std::clamp(dot(x - a, ab) / len2, 0.0, 1.0) : 0.0;
+  return squared_norm(a + s * ab - x);
+}
+
 inline double min_squared_edge(Point3 a, Point3 b, Point3 c) {
   return std::min({squared_norm(b - a), squared_norm(c - a), squared_norm(c - b)});
 }
