@@ -1,0 +1,179 @@
+// The CAD oracle's own intersector (tessellation, Newton, closed forms) on the
+// shared STEP files, checked against OpenCASCADE's reference
+// (rdmesh/cad_reference.h): every crossing it returns lies on the segment and on
+// its face, and its nearest crossing is OpenCASCADE's on (nearly) every segment.
+// Skipped when the data directory is absent.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <random>
+#include <thread>
+#include <vector>
+
+#include "oracles/oracle_conformance.h"
+#include "rdmesh/cad_oracle.h"
+#include "rdmesh/cad_reference.h"
+
+namespace rdmesh {
+namespace {
+
+const std::filesystem::path kStep = "/work/shared/data/step";
+
+std::unique_ptr<CadOracle> load_shared(const char* file) {
+  const std::filesystem::path path = kStep / file;
+  if (!std::filesystem::exists(path)) return nullptr;
+  return load_cad_file(path.string());
+}
+
+/// `count` segments: half between two random points of the box, half short
+/// (1e-3..1e-1 of the diagonal) through points near the patches' initial points,
+/// as the duals of surface facets are.
+std::vector<std::pair<Point3, Point3>> segments(const CadOracle& o, int count, unsigned seed) {
+  std::vector<Point3> surface;
+  for (const PatchInfo& p : o.patches()) {
+    for (const Point3& x : o.initial_points(p.id)) surface.push_back(x);
+  }
+  const Box3 box = o.bounding_box();
+  const double diag = box.diagonal();
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::normal_distribution<double> g;
+  auto unit = [&] {
+    const Point3 v{g(rng), g(rng), g(rng)};
+    return (1 / norm(v)) * v;
+  };
+  auto in_box = [&] {
+    return Point3{box.lo.x + u(rng) * (box.hi.x - box.lo.x),
+                  box.lo.y + u(rng) * (box.hi.y - box.lo.y),
+                  box.lo.z + u(rng) * (box.hi.z - box.lo.z)};
+  };
+  std::vector<std::pair<Point3, Point3>> out;
+  for (int i = 0; i < count; ++i) {
+    if (i % 2 == 0 || surface.empty()) {
+      out.emplace_back(in_box(), in_box());
+      continue;
+    }
+    const double len = diag * std::pow(10.0, -1.0 - 2.0 * u(rng));
+    const Point3 x = surface[static_cast<std::size_t>(u(rng) * surface.size()) % surface.size()];
+    const Point3 c = x + (0.2 * len * u(rng)) * unit(), h = (0.5 * len) * unit();
+    out.emplace_back(c - h, c + h);
+  }
+  return out;
+}
+
+class SharedStep : public ::testing::TestWithParam<const char*> {};
+
+// Measured at 1500 segments per file: no crossing missed or off its face; the
+// only disagreements are OpenCASCADE's ON-boundary crossings of segments
+// grazing an edge (at most 1 per file).
+TEST_P(SharedStep, NearestCrossingMatchesOpenCascade) {
+  const auto oracle = load_shared(GetParam());
+  if (!oracle) GTEST_SKIP() << kStep << " is absent";
+  CadReference ref(*oracle);
+  const double tol = oracle->tolerance();
+  const auto on_its_face = [&](const CadOracle::Crossing& c) {
+    const CadReference::Foot f = ref.foot(c.point, c.patch);
+    return f.distance <= tol && (f.in_face || ref.distance_to_face(c.point, c.patch) <= tol);
+  };
+  const auto list = segments(*oracle, 1500, 7);
+  int agree = 0, crossings = 0, missed = 0;
+  for (const auto& [a, b] : list) {
+    const auto mine = oracle->first_crossing(a, b);
+    const auto theirs = ref.first_crossing(a, b);
+    if (mine) {
+      ++crossings;
+      const Point3 d = (1 / distance(a, b)) * (b - a);
+      const double t = dot(mine->point - a, d);
+      EXPECT_LE(distance(mine->point, a + t * d), tol) << "crossing off the segment";
+      EXPECT_GE(t, -tol);
+      EXPECT_LE(t, distance(a, b) + tol);
+      EXPECT_TRUE(on_its_face(*mine)) << "crossing off patch " << mine->patch.value;
+    }
+    if ((!mine && !theirs) || (mine && theirs && mine->patch == theirs->patch &&
+                               distance(mine->point, theirs->point) <= 10 * tol)) {
+      ++agree;
+    } else if (theirs && !theirs->tangent && (!mine || theirs->distance < mine->distance) &&
+               on_its_face(*theirs)) {
+      ++missed;  // OpenCASCADE's transversal crossing is nearer and valid
+    }
+  }
+  std::printf("%s: %d/%zu segments agree, %d crossings, %d missed\n", GetParam(), agree,
+              list.size(), crossings, missed);
+  EXPECT_GE(agree, 0.995 * list.size());
+  EXPECT_LE(missed, 1);
+  EXPECT_GT(crossings, static_cast<int>(list.size()) / 2);
+}
+
+// locate() agrees with intersect(), hits separate their patch's sides, project()
+// lands on the patch (the shared suite, without its curve checks).
+TEST_P(SharedStep, PassesOracleConformanceOfSurfaces) {
+  const auto oracle = load_shared(GetParam());
+  if (!oracle) GTEST_SKIP() << kStep << " is absent";
+  expect_oracle_conformance(*oracle, 400, 3, false);
+}
+
+// All B-spline (t20, wrenchnut: two solids), a periodic B-spline side
+// (periodic_u_cst), helical B-splines with cones (drill), tori and cones (screw).
+INSTANTIATE_TEST_SUITE_P(Files, SharedStep,
+                         ::testing::Values("gmsh_t20_data_component8.step", "gmsh_wrenchnut.stp",
+                                           "gmsh_periodic_u_cst.step", "occtsample_drill.step",
+                                           "occt_screw.step"),
+                         [](const auto& info) {
+                           std::string n = info.param;
+                           n = n.substr(0, n.find('.'));
+                           for (char& ch : n) ch = std::isalnum((unsigned char)ch) ? ch : '_';
+                           return n;
+                         });
+
+// Projections of points near the surface land on their face, as close as the
+// face's closest point found by BRepExtrema.
+TEST(CadProject, LandsOnTheFaceAtTheClosestPoint) {
+  const auto oracle = load_shared("gmsh_wrenchnut.stp");
+  if (!oracle) GTEST_SKIP() << kStep << " is absent";
+  CadReference ref(*oracle);
+  const double tol = oracle->tolerance(), diag = oracle->bounding_box().diagonal();
+  std::mt19937 rng(5);
+  std::normal_distribution<double> g;
+  int checked = 0;
+  for (const PatchInfo& patch : oracle->patches()) {
+    const std::vector<Point3> seeds = oracle->initial_points(patch.id);
+    for (std::size_t i = 0; i < seeds.size(); i += 4) {
+      const Point3 v{g(rng), g(rng), g(rng)};
+      const Point3 p = seeds[i] + (0.01 * diag / norm(v)) * v;
+      const std::optional<Point3> q = oracle->project(p, patch.id);
+      ASSERT_TRUE(q.has_value());
+      EXPECT_LE(ref.distance_to_face(*q, patch.id), tol) << "projection off " << patch.name;
+      EXPECT_LE(distance(p, *q), ref.distance_to_face(p, patch.id) + tol)
+          << "projection farther than the closest point of " << patch.name;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 100);
+}
+
+// Threads with their own OpenCASCADE state give the serial answers on B-splines.
+TEST(CadIntersector, ConcurrentCrossingsMatchSerialOnes) {
+  const auto oracle = load_shared("gmsh_wrenchnut.stp");
+  if (!oracle) GTEST_SKIP() << kStep << " is absent";
+  const auto list = segments(*oracle, 600, 11);
+  auto answers = [&] {
+    std::vector<double> out;
+    for (const auto& [a, b] : list) {
+      const auto c = oracle->first_crossing(a, b);
+      out.push_back(c ? c->distance + 1000 * c->patch.value : -1.0);
+      out.push_back(oracle->locate(a).value);
+    }
+    return out;
+  };
+  const std::vector<double> serial = answers();
+  std::vector<std::vector<double>> results(3);
+  std::vector<std::thread> threads;
+  for (auto& r : results) threads.emplace_back([&r, &answers] { r = answers(); });
+  for (auto& t : threads) t.join();
+  for (const auto& r : results) EXPECT_EQ(r, serial);
+}
+
+}  // namespace
+}  // namespace rdmesh
