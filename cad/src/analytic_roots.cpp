@@ -116,4 +116,26 @@ int analytic_roots(const FacePatch& f, const Point3& a, const Point3& d, Analyti
   return n;
 }
 
+void analytic_d1(const FacePatch& f, double u, double v, Point3& p, Point3& su, Point3& sv) {
+  gp_Pnt q;
+  gp_Vec du, dv;
+  switch (f.kind) {
+    case SurfaceKind::plane:
+      ElSLib::D1(u, v, f.plane, q, du, dv);
+      break;
+    case SurfaceKind::cylinder:
+      ElSLib::D1(u, v, f.cylinder, q, du, dv);
+      break;
+    case SurfaceKind::cone:
+      ElSLib::D1(u, v, f.cone, q, du, dv);
+      break;
+    case SurfaceKind::sphere:
+      ElSLib::D1(u, v, f.sphere, q, du, dv);
+      break;
+    case SurfaceKind::parametric:
+      throw InternalError("analytic_d1 on a parametric face");
+  }
+  p = to_point(q.XYZ()), su = to_point(du.XYZ()), sv = to_point(dv.XYZ());
+}
+
 }  // namespace rdmesh::cad

@@ -20,4 +20,7 @@ struct AnalyticRoot {
 /// the surface gives none.
 int analytic_roots(const FacePatch& f, const Point3& a, const Point3& d, AnalyticRoot out[2]);
 
+/// S(u, v) and its first derivatives on the analytic surface of `f`.
+void analytic_d1(const FacePatch& f, double u, double v, Point3& p, Point3& su, Point3& sv);
+
 }  // namespace rdmesh::cad

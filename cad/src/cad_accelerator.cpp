@@ -1,7 +1,8 @@
 // The query accelerator of a model (cad_model.h: build_accelerator): every
-// face's cells and triangles, one tree over all triangles' boxes inflated by
-// their deviation (for intersections), one tree per face over its own
-// triangles (for projections), and each face's boundary curves.
+// face's cells and triangles, the candidate tree (parametric faces' triangles
+// with boxes inflated by their deviation, other faces whole) for
+// intersections, one tree per face over its own triangles for projections, and
+// each face's boundary curves.
 #include <BRep_Tool.hxx>
 #include <GeomAdaptor_Curve.hxx>
 #include <Standard_Failure.hxx>
@@ -74,17 +75,17 @@ void build_accelerator(CadOracle::Model& m) {
     std::vector<Box3> own;
     for (int t = f.first_triangle; t < f.end_triangle; ++t) {
       own.push_back(triangle_box(m.triangles[t], 0));
-      boxes.push_back(triangle_box(m.triangles[t], m.triangles[t].deviation + m.tolerance));
     }
     f.triangle_tree = TriangleBvh(own);
-    if (f.first_triangle == f.end_triangle) {
-      // No tessellation: OpenCASCADE intersects the face wherever its box is met.
-      SurfaceTriangle whole;
-      whole.face = face;
-      whole.occt_only = true;
-      m.triangles.push_back(whole);
+    if (f.first_triangle == f.end_triangle) ++untessellated;
+    if (f.kind != SurfaceKind::parametric || f.first_triangle == f.end_triangle) {
+      m.candidates.push_back({face, -1});
       boxes.push_back(f.box);
-      ++untessellated;
+    } else {
+      for (int t = f.first_triangle; t < f.end_triangle; ++t) {
+        m.candidates.push_back({face, t});
+        boxes.push_back(triangle_box(m.triangles[t], m.triangles[t].deviation + m.tolerance));
+      }
     }
     try {
       f.boundary = boundary_curves(f.face);
@@ -92,7 +93,7 @@ void build_accelerator(CadOracle::Model& m) {
       f.boundary.clear();  // project() then falls back on BRepExtrema near the boundary
     }
   }
-  m.triangle_tree = TriangleBvh(boxes);
+  m.candidate_tree = TriangleBvh(boxes);
   if (untessellated > 0) {
     m.log.push_back(std::to_string(untessellated) +
                     " face(s) without a tessellation: intersected by OpenCASCADE only");

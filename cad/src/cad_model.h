@@ -107,6 +107,14 @@ struct FacePatch {
   SubdomainId outward_of, inward_of;
 };
 
+/// An item of the candidate tree: a triangle of a parametric face, or a whole
+/// face (triangle -1) answered in closed form or, without a tessellation, by
+/// OpenCASCADE.
+struct Candidate {
+  int face = 0;
+  int triangle = -1;  ///< index into Model::triangles
+};
+
 /// The nearest crossing of a ray with a face.
 struct RayHit {
   double distance = 0;  ///< along the ray
@@ -126,10 +134,13 @@ struct CadOracle::Model {
   std::vector<cad::SolidPiece> pieces;
   std::vector<SubdomainInfo> subdomains;
   std::vector<cad::FacePatch> faces;  // index = patch id - 1
-  /// Every face's tessellation (FacePatch::first_triangle..), and one tree over
-  /// their boxes inflated by each triangle's deviation from its surface.
+  /// Every face's tessellation (FacePatch::first_triangle..).
   std::vector<cad::SurfaceTriangle> triangles;
-  TriangleBvh triangle_tree;
+  /// What a segment is tested against, in one tree over their boxes: the
+  /// triangles of parametric faces (boxes inflated by their deviation), and
+  /// every other face as a whole (its box).
+  std::vector<cad::Candidate> candidates;
+  TriangleBvh candidate_tree;
   std::vector<PatchInfo> patches;
   std::vector<std::vector<Point3>> seeds;  // index = patch id - 1
   std::vector<CurveInfo> curve_infos;

@@ -49,15 +49,15 @@ constexpr Point3 kRays[3] = {{0.8017837257372732, 0.5345224838248488, 0.26726124
   throw OracleError(std::string("OpenCASCADE failed in ") + query + ": " + describe(e));
 }
 
-// The first crossing of segment [a, a + d] with a face: the triangles whose
-// inflated boxes the segment meets, nearest box first, until none can be nearer.
+// The first crossing of segment [a, a + d] with a face: the candidates whose
+// boxes the segment meets, nearest box first, until none can be nearer.
 std::optional<cad::RayHit> first_hit(const CadOracle::Model& m, std::uint64_t serial,
                                      const Point3& a, const Point3& d) {
   const double len = norm(d);
   if (!(len > 0) || !std::isfinite(len)) return std::nullopt;
   cad::RayQuery query(m, cad::thread_state(m, serial), a, (1 / len) * d, len);
   double bound = query.reach();
-  m.triangle_tree.nearest(
+  m.candidate_tree.nearest(
       [&](const Box3& b) {
         const double t = box_entry(a, d, b);
         return t < 0 ? std::numeric_limits<double>::infinity() : t * len;

@@ -4,6 +4,7 @@
 #include <TopAbs_State.hxx>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "analytic_roots.h"
 #include "thread_state.h"
@@ -60,26 +61,23 @@ RayQuery::RayQuery(const CadOracle::Model& m, ThreadState& ts, const Point3& a, 
 double RayQuery::reach() const { return best_ ? best_->distance : length_ + m_.tolerance; }
 
 void RayQuery::visit(int index) {
-  const SurfaceTriangle& t = m_.triangles[index];
-  FaceState& fs = ts_.face(t.face);
+  const Candidate& c = m_.candidates[index];
+  FaceState& fs = ts_.face(c.face);
   if (fs.occt_done) return;
-  if (t.occt_only) return occt(t.face);
-  if (m_.faces[t.face].kind != SurfaceKind::parametric) {
-    if (!fs.closed_form_done) closed_form(t.face);
-    fs.closed_form_done = true;
-    return;
-  }
-  solve(t, 0);
+  if (c.triangle >= 0) return solve(m_.triangles[c.triangle], 0);
+  if (m_.faces[c.face].kind == SurfaceKind::parametric) return occt(c.face);  // no tessellation
+  if (!fs.closed_form_done) closed_form(c.face);
+  fs.closed_form_done = true;
 }
 
 void RayQuery::closed_form(int face) {
   AnalyticRoot roots[2];
-  const int n = analytic_roots(m_.faces[face], a_, d_, roots);
-  const SurfaceEvaluator& s = ts_.surface(face);
+  const FacePatch& f = m_.faces[face];
+  const int n = analytic_roots(f, a_, d_, roots);
   for (int i = 0; i < n; ++i) {
     if (roots[i].w < 0 || roots[i].w > length_ || roots[i].w >= reach()) continue;
     Point3 p, su, sv;
-    s.d1(roots[i].u, roots[i].v, p, su, sv);
+    analytic_d1(f, roots[i].u, roots[i].v, p, su, sv);
     const Point3 x = a_ + roots[i].w * d_;
     if (distance(p, x) > m_.tolerance) return occt(face);  // parameters off the root
     consider(face, roots[i].w, roots[i].u, roots[i].v, x, su, sv, -1);
@@ -87,14 +85,19 @@ void RayQuery::closed_form(int face) {
 }
 
 void RayQuery::solve(const SurfaceTriangle& t, int depth) {
+  // The triangle's window on the whole line, then on the segment still wanted.
   const double r = t.deviation + m_.tolerance;
-  double lo = 0, hi = std::min(reach(), length_);
+  constexpr double kInfinity = std::numeric_limits<double>::infinity();
+  double lo = -kInfinity, hi = kInfinity;
   if (!clip(a_, d_, triangle_box(t, r), lo, hi) || !window(t, r, lo, hi)) return;
+  const double seg_lo = std::max(lo, 0.0), seg_hi = std::min(hi, std::min(reach(), length_));
+  if (seg_lo > seg_hi) return;
   const double c = dot(t.axis, d_);
   const bool transversal = std::fabs(c) > t.sin_cone;  // at most one crossing over t
   if (transversal || depth >= kMaxDepth) {
     // Newton from the line's crossing with t's plane (kept in the window).
-    const double w = c != 0 ? std::clamp(dot(t.axis, t.p[0] - a_) / c, lo, hi) : 0.5 * (lo + hi);
+    const double w =
+        c != 0 ? std::clamp(dot(t.axis, t.p[0] - a_) / c, seg_lo, seg_hi) : 0.5 * (seg_lo + seg_hi);
     const Point3 foot = closest_on_triangle(a_ + w * d_, t.p[0], t.p[1], t.p[2]);
     double b[3];
     barycentric(foot, t.p, b);

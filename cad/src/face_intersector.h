@@ -37,8 +37,8 @@ class RayQuery {
  public:
   RayQuery(const CadOracle::Model& m, ThreadState& ts, const Point3& a, const Point3& d,
            double length);
-  /// Looks for crossings over triangle `t` of Model::triangles.
-  void visit(int t);
+  /// Looks for crossings over candidate `c` of Model::candidates.
+  void visit(int c);
   /// Crossings at or beyond this distance cannot improve the answer.
   double reach() const;
   const std::optional<RayHit>& best() const { return best_; }

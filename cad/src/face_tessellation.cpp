@@ -21,7 +21,7 @@ constexpr double kMaxSpread = 0.08;         // rad: normals of a cell within thi
 constexpr double kMaxBend = 0.02;           // chord sagitta / cell extent
 constexpr double kMaxSagitta = 1e-3;        // x model diagonal: largest chord sagitta
 constexpr double kMaxCell = 0.25;           // x model diagonal: largest cell
-constexpr double kBoundaryCell = 1.0 / 16;  // x face box diagonal: largest boundary cell
+constexpr double kBoundaryCell = 1.0 / 32;  // x face box diagonal: largest boundary cell
 constexpr int kMaxDepth = 24;               // adaptive binary splits of one cell
 constexpr double kConeFactor = 1.5, kConeMargin = 0.005;  // measured cone -> used cone
 constexpr double kDeviationFactor = 2;                    // sampled deviation -> bound
@@ -43,18 +43,21 @@ Point3 unit_normal(const Point3& su, const Point3& sv) {
 
 // S(u, v) and its unit normal; where the normal degenerates (a pole, a collapsed
 // edge) the normal is taken a little way towards (uc, vc), where it is the limit
-// normal of the region. Zero when it stays degenerate.
-void sample(const SurfaceEvaluator& s, double u, double v, double uc, double vc, Point3& p,
+// normal of the region. Zero when it stays degenerate. Returns false when the
+// normal at (u, v) itself degenerates.
+bool sample(const SurfaceEvaluator& s, double u, double v, double uc, double vc, Point3& p,
             Point3& n) {
   Point3 su, sv;
   s.d1(u, v, p, su, sv);
   n = unit_normal(su, sv);
+  if (squared_norm(n) > 0) return true;
   for (double step : {1e-6, 1e-3}) {
-    if (squared_norm(n) > 0) return;
     Point3 q;
     s.d1(u + step * (uc - u), v + step * (vc - v), q, su, sv);
     n = unit_normal(su, sv);
+    if (squared_norm(n) > 0) break;
   }
+  return false;
 }
 
 // Angle between unit normals; 0 when either is degenerate (zero).
@@ -199,11 +202,15 @@ class Builder {
     f_.cells.nodes[index].state = state;
     if (state == UvState::outside) return;
     // 3 x 3 samples: corners, edge midpoints, centre.
-    Point3 p[3][3], n[3][3];
+    // Normals at singular samples (poles, collapsed edges) are kept for the
+    // triangles but left out of the split criteria (o): near such points the
+    // limit normal may flip from one sample to the next.
+    Point3 p[3][3], n[3][3], o[3][3];
     for (int i = 0; i < 3; ++i) {
       for (int j = 0; j < 3; ++j) {
         const double u = r.u0 + 0.5 * i * (r.u1 - r.u0), v = r.v0 + 0.5 * j * (r.v1 - r.v0);
-        sample(s_, u, v, um, vm, p[i][j], n[i][j]);
+        const bool regular = sample(s_, u, v, um, vm, p[i][j], n[i][j]);
+        o[i][j] = regular ? n[i][j] : Point3{};
       }
     }
     double ext_u = 0, ext_v = 0, turn_u = 0, turn_v = 0, spread = 0;
@@ -211,14 +218,14 @@ class Builder {
     for (int k = 0; k < 3; ++k) {
       ext_u = std::max(ext_u, distance(p[0][k], p[1][k]) + distance(p[1][k], p[2][k]));
       ext_v = std::max(ext_v, distance(p[k][0], p[k][1]) + distance(p[k][1], p[k][2]));
-      turn_u = std::max(turn_u, angle(n[0][k], n[2][k]));
-      turn_v = std::max(turn_v, angle(n[k][0], n[k][2]));
-      for (int j = 0; j < 3; ++j) mean = mean + n[k][j];
+      turn_u = std::max(turn_u, angle(o[0][k], o[2][k]));
+      turn_v = std::max(turn_v, angle(o[k][0], o[k][2]));
+      for (int j = 0; j < 3; ++j) mean = mean + o[k][j];
     }
     if (!planar_ && norm(mean) > 0) {
       const Point3 axis = (1 / norm(mean)) * mean;
       for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) spread = std::max(spread, angle(n[i][j], axis));
+        for (int j = 0; j < 3; ++j) spread = std::max(spread, angle(o[i][j], axis));
       }
     }
     // Sagittas of the chords along u and along v (the surface's bend, in any direction).
@@ -236,6 +243,8 @@ class Builder {
       int axis = ext_u >= ext_v ? 0 : 1;  // large: halve the longer side
       if (bends) axis = sag_u >= sag_v ? 0 : 1;
       if (turns) axis = turn_u >= turn_v ? 0 : 1;
+      // Never a side already a thousand times shorter than the other.
+      if (1000 * (axis == 0 ? ext_u : ext_v) < (axis == 0 ? ext_v : ext_u)) axis = 1 - axis;
       return split(index, r, axis, axis == 0 ? um : vm, pieces, depth + 1);
     }
     // A leaf: two triangles split along the (u0, v0)-(u1, v1) diagonal.

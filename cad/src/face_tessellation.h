@@ -55,9 +55,6 @@ struct SurfaceTriangle {
   double sin_cone = 1;   ///< every normal over the triangle is within asin(sin_cone) of axis
   double deviation = 0;  ///< |S(u, v) - flat(u, v)| stays below this over the triangle
   bool inside = false;   ///< the triangle's cell is an inside cell
-  /// The face could not be tessellated: this item stands for its whole box, and
-  /// OpenCASCADE intersects the face whenever the box is met.
-  bool occt_only = false;
 };
 
 /// Builds `f.cells` and appends the face's triangles to `out`. `size` is the
