@@ -14,7 +14,7 @@ namespace {
 
 constexpr int kMaxDepth = 8;    // subdivision levels below a tessellation triangle
 constexpr int kMaxWork = 4000;  // subdivisions per query before OpenCASCADE takes over
-constexpr double kGrow = 0.25;  // a root within the triangle grown by this settles it
+constexpr double kGrow = 1e-9;  // barycentric slack of "a root inside the triangle"
 constexpr double kTangentCosine = 1e-6;
 
 // Entry and exit parameters (in [lo, hi]) of line a + w d through box b; false if it misses.
@@ -54,7 +54,7 @@ double near_period(double x, double ref, double period) {
 
 RayQuery::RayQuery(const CadOracle::Model& m, ThreadState& ts, const Point3& a, const Point3& d,
                    double length)
-    : m_(m), ts_(ts), a_(a), d_(d), length_(length) {
+    : m_(m), ts_(ts), a_(a), d_(d), length_(length), slack_(1e-9 * m.box.diagonal()) {
   ts_.begin_query();
 }
 
@@ -65,7 +65,9 @@ void RayQuery::visit(int index) {
   FaceState& fs = ts_.face(c.face);
   if (fs.occt_done) return;
   if (c.triangle >= 0) return solve(m_.triangles[c.triangle], 0);
-  if (m_.faces[c.face].kind == SurfaceKind::parametric) return occt(c.face);  // no tessellation
+  if (m_.faces[c.face].kind == SurfaceKind::parametric) {  // no tessellation
+    return occt(c.face, 0, std::min(reach(), length_));
+  }
   if (!fs.closed_form_done) closed_form(c.face);
   fs.closed_form_done = true;
 }
@@ -79,14 +81,18 @@ void RayQuery::closed_form(int face) {
     Point3 p, su, sv;
     analytic_d1(f, roots[i].u, roots[i].v, p, su, sv);
     const Point3 x = a_ + roots[i].w * d_;
-    if (distance(p, x) > m_.tolerance) return occt(face);  // parameters off the root
+    if (distance(p, x) > m_.tolerance) {  // parameters off the root
+      return occt(face, 0, std::min(reach(), length_));
+    }
     consider(face, roots[i].w, roots[i].u, roots[i].v, x, su, sv, -1);
   }
 }
 
 void RayQuery::solve(const SurfaceTriangle& t, int depth) {
   // The triangle's window on the whole line, then on the segment still wanted.
-  const double r = t.deviation + m_.tolerance;
+  // A crossing lies on the surface, within t.deviation of t: only rounding is
+  // added (not the tolerance, or near misses would never be told apart).
+  const double r = t.deviation + slack_;
   constexpr double kInfinity = std::numeric_limits<double>::infinity();
   double lo = -kInfinity, hi = kInfinity;
   if (!clip(a_, d_, triangle_box(t, r), lo, hi) || !window(t, r, lo, hi)) return;
@@ -111,7 +117,7 @@ void RayQuery::solve(const SurfaceTriangle& t, int depth) {
   }
   // A grazing segment, or Newton failed or ended elsewhere: look closer, down to
   // the finest level, where a grazing crossing may hide a second one next to it.
-  if (depth >= kMaxDepth || ++work_ > kMaxWork) return occt(t.face);
+  if (depth >= kMaxDepth || ++work_ > kMaxWork) return occt(t.face, seg_lo, seg_hi);
   subdivide(t, depth);
 }
 
@@ -182,7 +188,6 @@ void RayQuery::subdivide(const SurfaceTriangle& t, int depth) {
     }
     measure_triangle(s, child);
     solve(child, depth + 1);
-    if (ts_.face(t.face).occt_done) return;
   }
 }
 
@@ -192,7 +197,7 @@ bool RayQuery::settles(const SurfaceTriangle& t, const LineRoot& root, double c,
   // of n . d): over a transversal triangle the line crosses at most once there.
   const Point3 n = cross(root.su, root.sv);
   if (root.w >= lo && root.w <= hi && dot(n, d_) * c > 0) return true;
-  // A root in t (grown by kGrow) is the triangle's own.
+  // A root inside t is its only one (t is transversal).
   const SurfaceEvaluator& s = ts_.surface(t.face);
   const double cu = (t.uv[0][0] + t.uv[1][0] + t.uv[2][0]) / 3;
   const double cv = (t.uv[0][1] + t.uv[1][1] + t.uv[2][1]) / 3;
@@ -229,15 +234,24 @@ void RayQuery::consider(int face, double w, double u, double v, const Point3& po
   best_ = h;
 }
 
-void RayQuery::occt(int face) {
+void RayQuery::occt(int face, double w0, double w1) {
   FaceState& fs = ts_.face(face);
   if (fs.occt_done) return;
-  fs.occt_done = true;
-  const double hi = std::min(reach(), length_);
+  for (int k = 0; k < fs.occt_windows; ++k) {
+    if (fs.occt_window[k][0] <= w0 && w1 <= fs.occt_window[k][1]) return;  // done already
+  }
+  if (fs.occt_windows == FaceState::kWindows) {  // too many spots: the whole segment
+    w0 = 0, w1 = std::min(reach(), length_);
+    fs.occt_done = true;
+  } else {
+    fs.occt_window[fs.occt_windows][0] = w0;
+    fs.occt_window[fs.occt_windows][1] = w1;
+    ++fs.occt_windows;
+  }
   std::vector<OcctFaceIntersector::Hit>& hits = ts_.occt_hits;
   hits.clear();
   try {
-    ts_.occt(face).intersect(a_, d_, 0.0, hi, hits);
+    ts_.occt(face).intersect(a_, d_, w0, w1, hits);
   } catch (const Standard_Failure&) {
     return;  // a degenerate sub-problem of this face: no crossing found there
   }

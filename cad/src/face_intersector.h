@@ -1,7 +1,7 @@
 // Internal to cad/: the exact crossing of a segment with the faces, found from
 // the tessellation's candidate triangles (face_tessellation.h). A triangle t
 // stands for the surface over its (u, v) triangle, which lies within
-// r = deviation + tolerance of it and has its normals in t's cone.
+// r = deviation (plus rounding) of it and has its normals in t's cone.
 //
 //  - Plane, cylinder, cone, sphere: the face's crossings are computed once per
 //    query in closed form (analytic_roots.h).
@@ -10,13 +10,13 @@
 //    window). When the segment is transversal to the whole cone
 //    (|axis . d| > sin_cone) the surface over t is a graph it crosses at most
 //    once there, so Newton on S(u, v) = a + w d, started where the segment
-//    crosses t's plane, finds that crossing; a root inside t (grown by a
-//    quarter), or in the window crossing the way the surface over t does,
-//    settles t. When the segment grazes the cone, or Newton fails or ends
-//    elsewhere, t is cut into four, each measured again and treated the same
+//    crosses t's plane, finds that crossing; a root inside t, or in the window
+//    crossing the way the surface over t does, settles t. When the segment grazes the cone, or
+//    Newton fails or ends elsewhere, t is cut into four, each measured again and treated the same
 //    way, down to kMaxDepth levels; there OpenCASCADE's intersector
-//    (occt_fallback.h) takes the whole face over the segment, as it does for a
-//    face without tessellation.
+//    (occt_fallback.h) takes the face over that triangle's window (over the
+//    whole segment after a few such windows, and for a face without
+//    tessellation).
 // Each crossing is classified in (u, v): inside cells are IN without the 2D
 // classifier, outside cells are OUT, boundary cells ask the face's classifier
 // (IN, or ON = on the boundary, which marks the hit tangent).
@@ -58,12 +58,14 @@ class RayQuery {
   /// `state` is its TopAbs_State in the face, or -1 when not classified yet.
   void consider(int face, double w, double u, double v, const Point3& point, const Point3& su,
                 const Point3& sv, int state, bool tangent = false);
-  void occt(int face);
+  /// OpenCASCADE's crossings of `face` for w in [w0, w1].
+  void occt(int face, double w0, double w1);
 
   const CadOracle::Model& m_;
   ThreadState& ts_;
   Point3 a_, d_;
   double length_;
+  double slack_;  // rounding allowance of the window tests
   int work_ = 0;  // subdivisions so far in this query
   std::optional<RayHit> best_;
 };

@@ -1,12 +1,8 @@
 // A face's cells and triangles (face_tessellation.h).
 #include "face_tessellation.h"
 
-#include <BRepAdaptor_Curve2d.hxx>
-#include <BRep_Tool.hxx>
 #include <GeomAdaptor_Surface.hxx>
 #include <TColStd_Array1OfReal.hxx>
-#include <TopExp_Explorer.hxx>
-#include <TopoDS.hxx>
 #include <algorithm>
 #include <cmath>
 #include <gp_Pnt2d.hxx>
@@ -30,8 +26,10 @@ struct Box2 {
   double u0, u1, v0, v1;
 };
 
-bool overlap(const Box2& a, const Box2& b) {
-  return a.u0 <= b.u1 && b.u0 <= a.u1 && a.v0 <= b.v1 && b.v0 <= a.v1;
+// Whether chord s's tube can meet cell r.
+bool meets(const UvSegment& s, const Box2& r) {
+  return std::min(s.au, s.bu) - s.reach <= r.u1 && r.u0 <= std::max(s.au, s.bu) + s.reach &&
+         std::min(s.av, s.bv) - s.reach <= r.v1 && r.v0 <= std::max(s.av, s.bv) + s.reach;
 }
 
 Point3 unit_normal(const Point3& su, const Point3& sv) {
@@ -64,44 +62,6 @@ bool sample(const SurfaceEvaluator& s, double u, double v, double uc, double vc,
 double angle(const Point3& a, const Point3& b) {
   if (squared_norm(a) == 0 || squared_norm(b) == 0) return 0;
   return std::acos(std::clamp(dot(a, b), -1.0, 1.0));
-}
-
-// Boxes around the face's boundary in (u, v): each pcurve cut until the chord
-// strays less than `eps` from its midpoint sample, each piece boxed and
-// widened by twice that deviation plus `margin`.
-void add_pieces(const BRepAdaptor_Curve2d& c, double ta, double tb, const gp_Pnt2d& pa,
-                const gp_Pnt2d& pb, int depth, double eps, double margin, std::vector<Box2>& out) {
-  const double tm = 0.5 * (ta + tb);
-  const gp_Pnt2d pm = c.Value(tm);
-  const double dev = pm.Distance(gp_Pnt2d(0.5 * (pa.X() + pb.X()), 0.5 * (pa.Y() + pb.Y())));
-  if (dev > eps && depth < 12) {
-    add_pieces(c, ta, tm, pa, pm, depth + 1, eps, margin, out);
-    add_pieces(c, tm, tb, pm, pb, depth + 1, eps, margin, out);
-    return;
-  }
-  const double w = 2 * dev + margin;
-  out.push_back({std::min({pa.X(), pb.X(), pm.X()}) - w, std::max({pa.X(), pb.X(), pm.X()}) + w,
-                 std::min({pa.Y(), pb.Y(), pm.Y()}) - w, std::max({pa.Y(), pb.Y(), pm.Y()}) + w});
-}
-
-std::vector<Box2> boundary_pieces(const FacePatch& f) {
-  std::vector<Box2> out;
-  const double uv_size = std::hypot(f.u1 - f.u0, f.v1 - f.v0);
-  const double eps = 1e-3 * uv_size;
-  const double margin = 1e-4 * uv_size + 2 * BRep_Tool::Tolerance(f.face);
-  for (TopExp_Explorer ex(f.face, TopAbs_EDGE); ex.More(); ex.Next()) {
-    const BRepAdaptor_Curve2d c(TopoDS::Edge(ex.Current()), f.face);
-    const double t0 = c.FirstParameter(), t1 = c.LastParameter();
-    constexpr int kStart = 8;
-    gp_Pnt2d prev = c.Value(t0);
-    for (int k = 1; k <= kStart; ++k) {
-      const double ta = t0 + (t1 - t0) * (k - 1) / kStart, tb = t0 + (t1 - t0) * k / kStart;
-      const gp_Pnt2d next = c.Value(tb);
-      add_pieces(c, ta, tb, prev, next, 0, eps, margin, out);
-      prev = next;
-    }
-  }
-  return out;
 }
 
 // Cut values forced in one parameter: the surface's C2 breaks (B-spline knots),
@@ -139,7 +99,7 @@ class Builder {
       : f_(f), face_(face), s_(s), size_(size), out_(out) {
     planar_ = f.kind == SurfaceKind::plane;
     face_size_ = f.box.diagonal();
-    pieces_ = boundary_pieces(f);
+    f.cells.segments = boundary_segments(f);
     const GeomAdaptor_Surface a(f.surface, f.u0, f.u1, f.v0, f.v1);
     const double half_u = 0.5 * (f.u1 - f.u0), half_v = 0.5 * (f.v1 - f.v0);
     u_cuts_ = forced_cuts(a, true, f.u0, f.u1, a.IsUPeriodic() ? std::min(half_u, 0.8) : half_u);
@@ -151,7 +111,7 @@ class Builder {
     c.u0 = f_.u0, c.u1 = f_.u1, c.v0 = f_.v0, c.v1 = f_.v1;
     c.u_period = s_.u_period(), c.v_period = s_.v_period();
     c.nodes.assign(1, {});
-    std::vector<int> all(pieces_.size());
+    std::vector<int> all(c.segments.size());
     for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
     build(0, {f_.u0, f_.u1, f_.v0, f_.v1}, all, 0);
   }
@@ -185,13 +145,13 @@ class Builder {
   }
 
   void build(int index, const Box2& r, const std::vector<int>& parent_pieces, int depth) {
-    double cut = 0;
-    if (forced(u_cuts_, r.u0, r.u1, cut)) return split(index, r, 0, cut, parent_pieces, depth);
-    if (forced(v_cuts_, r.v0, r.v1, cut)) return split(index, r, 1, cut, parent_pieces, depth);
-    std::vector<int> pieces;
+    std::vector<int> pieces;  // the boundary chords whose tubes meet the cell
     for (int p : parent_pieces) {
-      if (overlap(pieces_[p], r)) pieces.push_back(p);
+      if (meets(f_.cells.segments[p], r)) pieces.push_back(p);
     }
+    double cut = 0;
+    if (forced(u_cuts_, r.u0, r.u1, cut)) return split(index, r, 0, cut, pieces, depth);
+    if (forced(v_cuts_, r.v0, r.v1, cut)) return split(index, r, 1, cut, pieces, depth);
     UvState state = UvState::boundary;
     const double um = 0.5 * (r.u0 + r.u1), vm = 0.5 * (r.v0 + r.v1);
     if (pieces.empty()) {  // no boundary in the cell: all of it is in, or out
@@ -247,6 +207,9 @@ class Builder {
       if (1000 * (axis == 0 ? ext_u : ext_v) < (axis == 0 ? ext_v : ext_u)) axis = 1 - axis;
       return split(index, r, axis, axis == 0 ? um : vm, pieces, depth + 1);
     }
+    if (state == UvState::boundary) {
+      f_.cells.set_boundary_leaf(index, r.u0, r.u1, r.v0, r.v1, pieces, *f_.classifier);
+    }
     // A leaf: two triangles split along the (u0, v0)-(u1, v1) diagonal.
     const double cu[2] = {r.u0, r.u1}, cv[2] = {r.v0, r.v1};
     const int tri[2][3][2] = {{{0, 0}, {1, 0}, {1, 1}}, {{0, 0}, {1, 1}, {0, 1}}};
@@ -269,36 +232,11 @@ class Builder {
   const SurfaceEvaluator& s_;
   double size_, face_size_ = 0;
   bool planar_ = false;
-  std::vector<Box2> pieces_;
   std::vector<double> u_cuts_, v_cuts_;
   std::vector<SurfaceTriangle>& out_;
 };
 
 }  // namespace
-
-void UvCells::normalise(double& u, double& v) const {
-  if (u_period > 0) {
-    const double lo = u0 - 1e-9 * u_period;
-    u -= u_period * std::floor((u - lo) / u_period);
-  }
-  if (v_period > 0) {
-    const double lo = v0 - 1e-9 * v_period;
-    v -= v_period * std::floor((v - lo) / v_period);
-  }
-}
-
-UvState UvCells::state_at(double u, double v) const {
-  if (nodes.empty()) return UvState::boundary;
-  normalise(u, v);
-  const double eu = 1e-9 * (u1 - u0), ev = 1e-9 * (v1 - v0);
-  if (u < u0 - eu || u > u1 + eu || v < v0 - ev || v > v1 + ev) return UvState::outside;
-  int i = 0;
-  while (nodes[i].child >= 0) {
-    const Node& n = nodes[i];
-    i = n.child + ((n.axis == 0 ? u : v) > n.split ? 1 : 0);
-  }
-  return nodes[i].state;
-}
 
 Box3 triangle_box(const SurfaceTriangle& t, double r) {
   Box3 b{t.p[0], t.p[0]};

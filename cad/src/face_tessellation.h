@@ -1,49 +1,25 @@
 // Internal to cad/: a face's tessellation, used only to find where to look.
 //
-// The face's (u, v) box is cut by a kd-tree into cells. Each cell is known to be
-// inside the face, outside it (dropped) or crossed by its boundary (pcurves
-// sampled and boxed with a margin): a point in an inside cell needs no 2D
-// classifier. Cells are split where the surface turns (normal spread), where
-// they are large, and along the boundary. Every kept cell gives two flat
+// The face's (u, v) box is cut by a kd-tree into cells (uv_cells.h): inside the
+// face, outside it (dropped) or crossed by its boundary. Cells are split at the
+// surface's C2 breaks, where the surface turns (normal spread) or bends (chord
+// sagitta), where they are large, and along the boundary. Every kept cell gives two flat
 // triangles with (u, v) at their nodes; each triangle carries a bound on how far
 // the surface over it strays from it (twice the largest deviation sampled at its
 // edge midpoints and centroid: the exact factor is 4/3 for a quadratic surface)
 // and a cone holding the surface normals over it (the widest sampled angle times
-// 1.5 plus 0.02 rad). Both are measured, not assumed, and both err on the large side.
+// 1.5 plus 0.005 rad). Both are measured, not assumed, and both err on the large side.
 #pragma once
 
-#include <cstdint>
 #include <vector>
 
 #include "rdmesh/geometry.h"
+#include "uv_cells.h"
 
 namespace rdmesh::cad {
 
 struct FacePatch;
 class SurfaceEvaluator;
-
-/// Where a point of a face's (u, v) box lies relative to the face.
-enum class UvState : std::uint8_t { outside, inside, boundary };
-
-/// A kd-tree over a face's (u, v) box whose leaves are inside, outside or boundary cells.
-class UvCells {
- public:
-  struct Node {
-    double split = 0;       ///< inner node: the cut value along `axis`
-    int child = -1;         ///< inner node: the low child (the high one is child + 1); leaf: -1
-    std::uint8_t axis = 0;  ///< 0: u, 1: v
-    UvState state = UvState::boundary;  ///< leaf only
-  };
-  /// State of (u, v); (u, v) is first brought into the box by whole periods
-  /// (`u_period`, `v_period`, 0 when not periodic). Outside the box: outside.
-  UvState state_at(double u, double v) const;
-  /// (u, v) shifted by whole periods towards the box.
-  void normalise(double& u, double& v) const;
-
-  double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
-  double u_period = 0, v_period = 0;
-  std::vector<Node> nodes;  // nodes[0] is the root; empty: everything is boundary
-};
 
 /// A flat triangle standing for the surface S over a triangle of the (u, v) domain.
 struct SurfaceTriangle {

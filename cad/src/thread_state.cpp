@@ -16,6 +16,7 @@ FaceState& ThreadState::face(int i) {
     s.query = query_;
     s.closed_form_done = false;
     s.occt_done = false;
+    s.occt_windows = 0;
   }
   return s;
 }

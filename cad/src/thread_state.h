@@ -21,9 +21,13 @@ struct FaceState {
   std::unique_ptr<SurfaceEvaluator> surface;
   std::unique_ptr<BRepTopAdaptor_FClass2d> classifier;
   std::unique_ptr<OcctFaceIntersector> occt;
-  std::uint64_t query = 0;        ///< the query the two flags below belong to
+  std::uint64_t query = 0;        ///< the query the fields below belong to
   bool closed_form_done = false;  ///< the face's closed-form crossings were considered
   bool occt_done = false;         ///< OpenCASCADE intersected the face over the whole query
+  /// Windows [w0, w1] of the segment OpenCASCADE intersected the face over.
+  static constexpr int kWindows = 4;
+  double occt_window[kWindows][2] = {};
+  int occt_windows = 0;
 };
 
 class ThreadState {

@@ -27,13 +27,19 @@ std::unique_ptr<CadOracle> load_shared(const char* file) {
   return load_cad_file(path.string());
 }
 
-/// `count` segments: half between two random points of the box, half short
-/// (1e-3..1e-1 of the diagonal) through points near the patches' initial points,
-/// as the duals of surface facets are.
+/// `count` segments: a third between two random points of the box, the others
+/// short (1e-3..1e-1 of the diagonal) through points near the patches' initial
+/// points, as the duals of surface facets are, or near the curves (the faces'
+/// boundaries), where refinement spends most queries.
 std::vector<std::pair<Point3, Point3>> segments(const CadOracle& o, int count, unsigned seed) {
-  std::vector<Point3> surface;
+  std::vector<Point3> surface, edges;
   for (const PatchInfo& p : o.patches()) {
     for (const Point3& x : o.initial_points(p.id)) surface.push_back(x);
+  }
+  for (const CurveInfo& c : o.curves()) {
+    for (int k = 0; k < 16; ++k) {
+      edges.push_back(o.curve(c.id).point(c.t_begin + (c.t_end - c.t_begin) * (k + 0.5) / 16));
+    }
   }
   const Box3 box = o.bounding_box();
   const double diag = box.diagonal();
@@ -51,12 +57,13 @@ std::vector<std::pair<Point3, Point3>> segments(const CadOracle& o, int count, u
   };
   std::vector<std::pair<Point3, Point3>> out;
   for (int i = 0; i < count; ++i) {
-    if (i % 2 == 0 || surface.empty()) {
+    const std::vector<Point3>& near = i % 3 == 1 ? surface : edges;
+    if (i % 3 == 0 || near.empty()) {
       out.emplace_back(in_box(), in_box());
       continue;
     }
     const double len = diag * std::pow(10.0, -1.0 - 2.0 * u(rng));
-    const Point3 x = surface[static_cast<std::size_t>(u(rng) * surface.size()) % surface.size()];
+    const Point3 x = near[static_cast<std::size_t>(u(rng) * near.size()) % near.size()];
     const Point3 c = x + (0.2 * len * u(rng)) * unit(), h = (0.5 * len) * unit();
     out.emplace_back(c - h, c + h);
   }
@@ -65,9 +72,16 @@ std::vector<std::pair<Point3, Point3>> segments(const CadOracle& o, int count, u
 
 class SharedStep : public ::testing::TestWithParam<const char*> {};
 
-// Measured at 1500 segments per file: no crossing missed or off its face; the
-// only disagreements are OpenCASCADE's ON-boundary crossings of segments
-// grazing an edge (at most 1 per file).
+// The nearest crossing on each segment, against OpenCASCADE's. Categories:
+// same face and point (within 10 tolerances); same point on an adjacent face
+// (a segment through an edge); OpenCASCADE reports an ON-boundary crossing
+// the oracle does not (a segment grazing an edge: IntCurvesFace_Intersector's
+// ON band reaches 1e-3 mm outside these faces, beyond the model tolerance);
+// missed (OpenCASCADE's nearer crossing is transversal and on its face);
+// missed by OpenCASCADE (the oracle's nearer crossing is on its face); and
+// anything else. Measured on these 1500 segments per file: same face and point
+// 98.6..99.8%, adjacent face <= 8, OpenCASCADE's ON only <= 13, missed 0,
+// missed by OpenCASCADE <= 4, anything else 0.
 TEST_P(SharedStep, NearestCrossingMatchesOpenCascade) {
   const auto oracle = load_shared(GetParam());
   if (!oracle) GTEST_SKIP() << kStep << " is absent";
@@ -78,7 +92,7 @@ TEST_P(SharedStep, NearestCrossingMatchesOpenCascade) {
     return f.distance <= tol && (f.in_face || ref.distance_to_face(c.point, c.patch) <= tol);
   };
   const auto list = segments(*oracle, 1500, 7);
-  int agree = 0, crossings = 0, missed = 0;
+  int same = 0, edge = 0, loose = 0, missed = 0, they_missed = 0, other = 0, crossings = 0;
   for (const auto& [a, b] : list) {
     const auto mine = oracle->first_crossing(a, b);
     const auto theirs = ref.first_crossing(a, b);
@@ -91,18 +105,29 @@ TEST_P(SharedStep, NearestCrossingMatchesOpenCascade) {
       EXPECT_LE(t, distance(a, b) + tol);
       EXPECT_TRUE(on_its_face(*mine)) << "crossing off patch " << mine->patch.value;
     }
+    const bool nearer = theirs && (!mine || theirs->distance < mine->distance);
     if ((!mine && !theirs) || (mine && theirs && mine->patch == theirs->patch &&
                                distance(mine->point, theirs->point) <= 10 * tol)) {
-      ++agree;
-    } else if (theirs && !theirs->tangent && (!mine || theirs->distance < mine->distance) &&
-               on_its_face(*theirs)) {
-      ++missed;  // OpenCASCADE's transversal crossing is nearer and valid
+      ++same;
+    } else if (mine && theirs && distance(mine->point, theirs->point) <= 10 * tol) {
+      ++edge;
+    } else if (nearer && theirs->tangent) {
+      ++loose;  // a segment grazing an edge, within OpenCASCADE's ON band
+    } else if (nearer && !theirs->tangent && on_its_face(*theirs)) {
+      ++missed;
+    } else if (mine && !nearer && on_its_face(*mine)) {
+      ++they_missed;  // the oracle's crossing is nearer and valid
+    } else {
+      ++other;
     }
   }
-  std::printf("%s: %d/%zu segments agree, %d crossings, %d missed\n", GetParam(), agree,
-              list.size(), crossings, missed);
-  EXPECT_GE(agree, 0.995 * list.size());
-  EXPECT_LE(missed, 1);
+  std::printf(
+      "%s: %zu segments, %d crossings: same %d, adjacent face %d, OpenCASCADE's ON only %d, "
+      "missed %d, missed by OpenCASCADE %d, other %d\n",
+      GetParam(), list.size(), crossings, same, edge, loose, missed, they_missed, other);
+  EXPECT_GE(same, 0.98 * list.size());
+  EXPECT_EQ(missed, 0);
+  EXPECT_LE(other, 1);
   EXPECT_GT(crossings, static_cast<int>(list.size()) / 2);
 }
 
