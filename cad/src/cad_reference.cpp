@@ -1,14 +1,18 @@
 // OpenCASCADE reference answers (rdmesh/cad_reference.h).
 #include "rdmesh/cad_reference.h"
 
+#include <BRepAdaptor_Curve2d.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
 #include <BRep_Tool.hxx>
 #include <GeomAPI_ProjectPointOnSurf.hxx>
 #include <IntCurvesFace_Intersector.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
 #include <gp_Lin.hxx>
 #include <gp_Pnt2d.hxx>
 #include <limits>
+#include <random>
 
 #include "cad_model.h"
 
@@ -129,6 +133,44 @@ double CadReference::distance_to_face(const Point3& p, PatchId patch) {
   } catch (const Standard_Failure& e) {
     throw OracleError("OpenCASCADE failed in CadReference::distance_to_face: " + cad::describe(e));
   }
+}
+
+CadReference::CellCheck CadReference::check_cells(int per_face, unsigned seed) {
+  const CadOracle::Model& m = *impl_->model;
+  CellCheck out;
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  try {
+    for (std::size_t i = 0; i < m.faces.size(); ++i) {
+      const cad::FacePatch& f = m.faces[i];
+      std::unique_ptr<BRepTopAdaptor_FClass2d>& c = impl_->classifiers[i];
+      if (!c) c = std::make_unique<BRepTopAdaptor_FClass2d>(f.face, BRep_Tool::Tolerance(f.face));
+      std::vector<BRepAdaptor_Curve2d> pcurves;
+      for (TopExp_Explorer ex(f.face, TopAbs_EDGE); ex.More(); ex.Next()) {
+        pcurves.emplace_back(TopoDS::Edge(ex.Current()), f.face);
+      }
+      const double du = f.u1 - f.u0, dv = f.v1 - f.v0;
+      for (int k = 0; k < per_face; ++k) {
+        double u = f.u0 + uniform(rng) * du, v = f.v0 + uniform(rng) * dv;
+        if (k % 2 && !pcurves.empty()) {  // near the boundary
+          const BRepAdaptor_Curve2d& pc = pcurves[static_cast<std::size_t>(k / 2) % pcurves.size()];
+          const gp_Pnt2d q = pc.Value(pc.FirstParameter() +
+                                      uniform(rng) * (pc.LastParameter() - pc.FirstParameter()));
+          const double r = std::pow(10.0, -5 + 3 * uniform(rng)), angle = 2 * M_PI * uniform(rng);
+          u = q.X() + r * du * std::cos(angle), v = q.Y() + r * dv * std::sin(angle);
+        }
+        const cad::UvState mine = f.cells.state_at(u, v);
+        if (mine == cad::UvState::boundary) continue;
+        const TopAbs_State theirs = c->Perform(gp_Pnt2d(u, v));
+        if (theirs != TopAbs_IN && theirs != TopAbs_OUT) continue;
+        ++out.compared;
+        out.disagree += (mine == cad::UvState::inside) != (theirs == TopAbs_IN);
+      }
+    }
+  } catch (const Standard_Failure& e) {
+    throw OracleError("OpenCASCADE failed in CadReference::check_cells: " + cad::describe(e));
+  }
+  return out;
 }
 
 }  // namespace rdmesh

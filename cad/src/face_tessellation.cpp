@@ -100,6 +100,9 @@ class Builder {
     planar_ = f.kind == SurfaceKind::plane;
     face_size_ = f.box.diagonal();
     f.cells.segments = boundary_segments(f);
+    for (const UvSegment& seg : f.cells.segments) {
+      f.cells.box_margin = std::max(f.cells.box_margin, seg.reach);
+    }
     const GeomAdaptor_Surface a(f.surface, f.u0, f.u1, f.v0, f.v1);
     const double half_u = 0.5 * (f.u1 - f.u0), half_v = 0.5 * (f.v1 - f.v0);
     u_cuts_ = forced_cuts(a, true, f.u0, f.u1, a.IsUPeriodic() ? std::min(half_u, 0.8) : half_u);
@@ -155,7 +158,8 @@ class Builder {
     UvState state = UvState::boundary;
     const double um = 0.5 * (r.u0 + r.u1), vm = 0.5 * (r.v0 + r.v1);
     if (pieces.empty()) {  // no boundary in the cell: all of it is in, or out
-      const TopAbs_State s = f_.classifier->Perform(gp_Pnt2d(um, vm));
+      // (the point itself: no shift by periods, which state_at() tries later)
+      const TopAbs_State s = f_.classifier->Perform(gp_Pnt2d(um, vm), Standard_False);
       if (s == TopAbs_IN) state = UvState::inside;
       if (s == TopAbs_OUT) state = UvState::outside;
     }

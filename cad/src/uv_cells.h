@@ -3,8 +3,11 @@
 //
 // The face's boundary is its pcurves, cut into chords until each strays from
 // its chord by little; each chord carries a reach: twice the sampled sagitta,
-// plus a margin and the widest gap between consecutive pcurves. The true
-// boundary lies within the union of these tubes.
+// plus a margin, the widest gap between consecutive pcurves, and the band in
+// which OpenCASCADE's face classifier answers with tolerances (twice its own
+// polygon's sagitta, and the edge's 3D tolerance carried into (u, v)). The true
+// boundary, and every point that classifier might call IN or ON against the
+// geometry, lie within the union of these tubes.
 //
 // A kd-tree cuts the (u, v) box into cells (built by face_tessellation.cpp).
 // A cell no tube meets is wholly inside or wholly outside the face (its centre
@@ -54,11 +57,11 @@ class UvCells {
     double ref_u = 0, ref_v = 0;
   };
 
-  /// State of (u, v); (u, v) is first brought into the box by whole periods
-  /// (`u_period`, `v_period`, 0 when not periodic). Outside the box: outside.
+  /// State of (u, v): inside when one of its representatives shifted by whole
+  /// periods (`u_period`, `v_period`, 0 when not periodic) is inside, else
+  /// boundary when one is undecided, else outside. Beyond the box by more than
+  /// `box_margin`: outside.
   UvState state_at(double u, double v) const;
-  /// (u, v) shifted by whole periods towards the box.
-  void normalise(double& u, double& v) const;
   /// Makes node `index` (cell [cu0, cu1] x [cv0, cv1]) a boundary leaf with
   /// these chords, and picks and classifies its reference point.
   void set_boundary_leaf(int index, double cu0, double cu1, double cv0, double cv1,
@@ -66,11 +69,13 @@ class UvCells {
 
   double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
   double u_period = 0, v_period = 0;
+  double box_margin = 0;    ///< the widest chord reach
   std::vector<Node> nodes;  // nodes[0] is the root; empty: everything is boundary
   std::vector<UvSegment> segments;
   std::vector<int> segment_refs;
 
  private:
+  UvState state_in_box(double u, double v) const;
   UvState resolve(const Node& leaf, double u, double v) const;
 };
 

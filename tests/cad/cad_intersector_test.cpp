@@ -152,6 +152,26 @@ INSTANTIATE_TEST_SUITE_P(Files, SharedStep,
                            return n;
                          });
 
+// The cells' inside/outside answers are the face classifier's, also next to
+// the boundary, on planes, cylinders, cones, spheres, tori and B-splines; on
+// pcurves with narrow excursions (Solid_56: edges of tolerance 4e-3 whose
+// pcurves dip 0.1 into the face between sparse samples) and on a face whose
+// (u, v) box spans two periods (the bottle's thread).
+TEST(CadCells, ClassifyLikeTheFaceClassifier) {
+  for (const char* file :
+       {"gmsh_t20_data_component8.step", "gmsh_periodic_u_cst.step", "occtsample_drill.step",
+        "gmsh_Zylkopf.stp", "nist_stc_06_asme1_ap242-e3.stp", "gmsh_Solid_56.step",
+        "../brep/occt_bottle.brep"}) {
+    const auto oracle = load_shared(file);
+    if (!oracle) GTEST_SKIP() << kStep << " is absent";
+    CadReference ref(*oracle);
+    const CadReference::CellCheck c = ref.check_cells(200, 3);
+    std::printf("%s: %d points compared, %d disagree\n", file, c.compared, c.disagree);
+    EXPECT_EQ(c.disagree, 0) << file;
+    EXPECT_GT(c.compared, 100 * static_cast<int>(oracle->patches().size())) << file;
+  }
+}
+
 // Projections of points near the surface land on their face, as close as the
 // face's closest point found by BRepExtrema.
 TEST(CadProject, LandsOnTheFaceAtTheClosestPoint) {

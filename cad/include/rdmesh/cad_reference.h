@@ -36,6 +36,17 @@ class CadReference {
   /// infinite when it fails.
   double distance_to_face(const Point3& p, PatchId patch);
 
+  /// The oracle's (u, v) classification (its cells) against the face's
+  /// BRepTopAdaptor_FClass2d, at `per_face` points of every face: half random
+  /// in the face's (u, v) box, half near its pcurves (offset by 1e-5..1e-2 of
+  /// the box). Points either side leaves undecided (the cells defer to the
+  /// classifier, or the classifier answers ON) are not compared.
+  struct CellCheck {
+    int compared = 0;
+    int disagree = 0;
+  };
+  CellCheck check_cells(int per_face, unsigned seed);
+
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
