@@ -140,10 +140,11 @@ SurfaceFoot newton_foot(const SurfaceEvaluator& s, const Point3& x, double u, do
       }
     }
     if (!improved) {
-      // No descent along the Newton step: at a minimum when the gradient vanishes.
-      const double nu = norm(su), nv = norm(sv), en = norm(p - x);
-      foot.converged = en <= tolerance || (std::fabs(dot(p - x, su)) <= 1e-9 * en * nu &&
-                                           std::fabs(dot(p - x, sv)) <= 1e-9 * en * nv);
+      // No descent along the Newton step: a foot when p - S has no tangential
+      // part to speak of (measured as a length, against the tolerance).
+      const double nu = norm(su), nv = norm(sv);
+      foot.converged = nu > 0 && nv > 0 && std::fabs(dot(p - x, su)) <= 1e-3 * tolerance * nu &&
+                       std::fabs(dot(p - x, sv)) <= 1e-3 * tolerance * nv;
       break;
     }
     if (moved <= 0.01 * tolerance) {

@@ -61,7 +61,8 @@ struct SurfaceFoot {
 
 /// Newton on the gradient of |S(u, v) - p|^2 / 2 (Gauss-Newton when the Hessian
 /// is not positive definite), with step halving while the distance grows.
-/// Converged when a step moves the foot by less than `tolerance`.
+/// Converged when a step moves the foot by less than tolerance / 100, or when
+/// no step descends and the tangential parts of p - S are below tolerance / 1000.
 SurfaceFoot newton_foot(const SurfaceEvaluator& s, const Point3& p, double u, double v,
                         double tolerance);
 

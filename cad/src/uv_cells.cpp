@@ -81,7 +81,7 @@ std::vector<UvSegment> boundary_segments(const FacePatch& f) {
   std::vector<double> edge_tolerance;  // per chord
   std::vector<gp_Pnt2d> ends;
   const double uv_size = std::hypot(f.u1 - f.u0, f.v1 - f.v0);
-  const double eps = 1e-3 * uv_size;
+  const double eps = 1e-4 * uv_size;
   const double face_tolerance = BRep_Tool::Tolerance(f.face);
   double band = face_tolerance;  // the classifier's band (at least its tolerance)
   for (TopExp_Explorer ex(f.face, TopAbs_EDGE); ex.More(); ex.Next()) {
@@ -119,7 +119,7 @@ std::vector<UvSegment> boundary_segments(const FacePatch& f) {
   // Near the boundary the classifier answers with the edges' 3D tolerances:
   // each chord's tube also holds its edge's tolerance, carried into (u, v).
   const GeomAdaptor_Surface surface(f.surface);
-  const double margin = 1e-4 * uv_size + 2 * band + gap;
+  const double margin = 1e-7 * uv_size + 2 * band + gap;
   for (std::size_t i = 0; i < out.size(); ++i) {
     UvSegment& s = out[i];
     const double um = 0.5 * (s.au + s.bu), vm = 0.5 * (s.av + s.bv);
