@@ -1,6 +1,7 @@
 // Surface evaluation and the Newton solvers of surface_evaluator.h.
 #include "surface_evaluator.h"
 
+#include <TColStd_Array1OfReal.hxx>
 #include <algorithm>
 #include <cmath>
 
@@ -16,9 +17,30 @@ double wrap(double x, double centre, double period) {
   return x - period * std::round((x - centre) / period);
 }
 
+std::vector<double> breaks(const GeomAdaptor_Surface& a, bool u) {
+  const int n = u ? a.NbUIntervals(GeomAbs_CN) : a.NbVIntervals(GeomAbs_CN);
+  std::vector<double> out;
+  if (n < 1) return out;
+  TColStd_Array1OfReal t(1, n + 1);
+  if (u) {
+    a.UIntervals(t, GeomAbs_CN);
+  } else {
+    a.VIntervals(t, GeomAbs_CN);
+  }
+  for (int i = 1; i <= n + 1; ++i) out.push_back(t(i));
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+bool near(const std::vector<double>& sorted, double x) {
+  const auto it = std::lower_bound(sorted.begin(), sorted.end(), x);
+  auto close = [x](double k) { return std::fabs(x - k) <= 1e-10 * (1 + std::fabs(k)); };
+  return (it != sorted.end() && close(*it)) || (it != sorted.begin() && close(*(it - 1)));
+}
+
 }  // namespace
 
-SurfaceEvaluator::SurfaceEvaluator(const FacePatch& f) : adaptor_(f.surface) {
+SurfaceEvaluator::SurfaceEvaluator(const FacePatch& f) : surface_(f.surface), adaptor_(f.surface) {
   const GeomAbs_SurfaceType type = adaptor_.GetType();
   const bool extends = type == GeomAbs_BSplineSurface || type == GeomAbs_BezierSurface;
   const double mu = 0.25 * (f.u1 - f.u0), mv = 0.25 * (f.v1 - f.v0);
@@ -32,18 +54,37 @@ SurfaceEvaluator::SurfaceEvaluator(const FacePatch& f) : adaptor_(f.surface) {
   if (adaptor_.IsUPeriodic()) u_period_ = adaptor_.UPeriod();
   if (adaptor_.IsVPeriodic()) v_period_ = adaptor_.VPeriod();
   u_mid_ = 0.5 * (f.u0 + f.u1), v_mid_ = 0.5 * (f.v0 + f.v1);
+  u_breaks_ = breaks(adaptor_, true);
+  v_breaks_ = breaks(adaptor_, false);
+  u_first_ = adaptor_.FirstUParameter(), v_first_ = adaptor_.FirstVParameter();
+}
+
+bool SurfaceEvaluator::near_break(double u, double v) const {
+  if (u_period_ > 0) u -= u_period_ * std::floor((u - u_first_) / u_period_);
+  if (v_period_ > 0) v -= v_period_ * std::floor((v - v_first_) / v_period_);
+  return near(u_breaks_, u) || near(v_breaks_, v) ||
+         (u_period_ > 0 && near(u_breaks_, u + u_period_)) ||
+         (v_period_ > 0 && near(v_breaks_, v + v_period_));
 }
 
 void SurfaceEvaluator::d0(double u, double v, Point3& p) const {
   gp_Pnt q;
-  adaptor_.D0(u, v, q);
+  if (near_break(u, v)) {
+    GeomAdaptor_Surface(surface_).D0(u, v, q);
+  } else {
+    adaptor_.D0(u, v, q);
+  }
   p = to_point(q);
 }
 
 void SurfaceEvaluator::d1(double u, double v, Point3& p, Point3& su, Point3& sv) const {
   gp_Pnt q;
   gp_Vec du, dv;
-  adaptor_.D1(u, v, q, du, dv);
+  if (near_break(u, v)) {
+    GeomAdaptor_Surface(surface_).D1(u, v, q, du, dv);
+  } else {
+    adaptor_.D1(u, v, q, du, dv);
+  }
   p = to_point(q), su = to_point(du), sv = to_point(dv);
 }
 
@@ -51,7 +92,11 @@ void SurfaceEvaluator::d2(double u, double v, Point3& p, Point3& su, Point3& sv,
                           Point3& svv, Point3& suv) const {
   gp_Pnt q;
   gp_Vec du, dv, duu, dvv, duv;
-  adaptor_.D2(u, v, q, du, dv, duu, dvv, duv);
+  if (near_break(u, v)) {
+    GeomAdaptor_Surface(surface_).D2(u, v, q, du, dv, duu, dvv, duv);
+  } else {
+    adaptor_.D2(u, v, q, du, dv, duu, dvv, duv);
+  }
   p = to_point(q), su = to_point(du), sv = to_point(dv);
   suu = to_point(duu), svv = to_point(dvv), suv = to_point(duv);
 }

@@ -3,9 +3,14 @@
 //
 // GeomAdaptor_Surface caches B-spline spans (mutable state), so an evaluator is
 // owned by one thread (ThreadState) or used only while the model is built.
+// Within a few ulps of a knot the cached span and a freshly located one give
+// results that differ in the last bits, so the answer would depend on what was
+// evaluated before: there a fresh adaptor evaluates, and every evaluation is a
+// function of (u, v) alone (queries are deterministic).
 #pragma once
 
 #include <GeomAdaptor_Surface.hxx>
+#include <vector>
 
 #include "rdmesh/geometry.h"
 
@@ -31,9 +36,15 @@ class SurfaceEvaluator {
   double v_period() const { return v_period_; }
 
  private:
+  /// Whether (u, v) is so close to a knot that the span cache's history matters.
+  bool near_break(double u, double v) const;
+
+  Handle(Geom_Surface) surface_;
   GeomAdaptor_Surface adaptor_;
-  double u_lo_, u_hi_, v_lo_, v_hi_;  // clamp range of non-periodic parameters
-  double u_mid_, v_mid_;              // wrap centre of periodic ones
+  std::vector<double> u_breaks_, v_breaks_;  // every knot (GeomAbs_CN breaks), sorted
+  double u_first_ = 0, v_first_ = 0;         // start of the first period
+  double u_lo_, u_hi_, v_lo_, v_hi_;         // clamp range of non-periodic parameters
+  double u_mid_, v_mid_;                     // wrap centre of periodic ones
   double u_period_ = 0, v_period_ = 0;
 };
 
