@@ -12,6 +12,7 @@
 #include "cad_model.h"
 #include "face_intersector.h"
 #include "face_projection.h"
+#include "rdmesh/detail/triangle_bvh.h"
 #include "thread_state.h"
 
 namespace rdmesh {
@@ -49,17 +50,53 @@ constexpr Point3 kRays[3] = {{0.8017837257372732, 0.5345224838248488, 0.26726124
   throw OracleError(std::string("OpenCASCADE failed in ") + query + ": " + describe(e));
 }
 
-// The first crossing of segment [a, a + d] with a face: the candidates whose
-// boxes the segment meets, nearest box first, until none can be nearer.
-std::optional<cad::RayHit> first_hit(const CadOracle::Model& m, std::uint64_t serial,
-                                     const Point3& a, const Point3& d) {
+// Segment [a, b] within the model box (every face lies in it), and how far
+// along [a, b] its start lies. Computed from the end nearer the box along the
+// unit direction: a Voronoi ray may reach 1e20, and coordinates that far from
+// the box carry no digits near it.
+struct Clipped {
+  Point3 a, b;
+  double offset = 0;
+};
+std::optional<Clipped> clip_to_box(const Box3& box, const Point3& a, const Point3& b) {
+  const Point3 d = b - a;
   const double len = norm(d);
   if (!(len > 0) || !std::isfinite(len)) return std::nullopt;
-  cad::RayQuery query(m, cad::thread_state(m, serial), a, (1 / len) * d, len);
+  const bool from_a = squared_distance(box, a) <= squared_distance(box, b);
+  const Point3 o = from_a ? a : b, dir = (from_a ? 1 / len : -1 / len) * d;
+  double s0 = 0, s1 = len;  // o + s dir, s in [s0, s1], lies in the box
+  const double po[3] = {o.x, o.y, o.z}, pd[3] = {dir.x, dir.y, dir.z};
+  const double lo[3] = {box.lo.x, box.lo.y, box.lo.z}, hi[3] = {box.hi.x, box.hi.y, box.hi.z};
+  for (int k = 0; k < 3; ++k) {
+    if (pd[k] == 0) {
+      if (po[k] < lo[k] || po[k] > hi[k]) return std::nullopt;
+      continue;
+    }
+    double ta = (lo[k] - po[k]) / pd[k], tb = (hi[k] - po[k]) / pd[k];
+    if (ta > tb) std::swap(ta, tb);
+    s0 = std::max(s0, ta), s1 = std::min(s1, tb);
+    if (s0 > s1) return std::nullopt;
+  }
+  const Point3 p0 = o + s0 * dir, p1 = o + s1 * dir;
+  if (from_a) return Clipped{p0, p1, s0};
+  return Clipped{p1, p0, len - s1};
+}
+
+// The first crossing of segment [a, b] with a face: the candidates whose boxes
+// the segment meets, nearest box first, until none can be nearer. Its distance
+// is from a.
+std::optional<cad::RayHit> first_hit(const CadOracle::Model& m, std::uint64_t serial,
+                                     const Point3& a, const Point3& b) {
+  const std::optional<Clipped> c = clip_to_box(m.box, a, b);
+  if (!c) return std::nullopt;
+  const Point3 d = c->b - c->a;
+  const double len = norm(d);
+  if (!(len > 0)) return std::nullopt;
+  cad::RayQuery query(m, cad::thread_state(m, serial), c->a, (1 / len) * d, len);
   double bound = query.reach();
   m.candidate_tree.nearest(
-      [&](const Box3& b) {
-        const double t = box_entry(a, d, b);
+      [&](const Box3& box) {
+        const double t = box_entry(c->a, d, box);
         return t < 0 ? std::numeric_limits<double>::infinity() : t * len;
       },
       [&](int t, double& reach) {
@@ -67,7 +104,9 @@ std::optional<cad::RayHit> first_hit(const CadOracle::Model& m, std::uint64_t se
         reach = query.reach();
       },
       bound);
-  return query.best();
+  std::optional<cad::RayHit> h = query.best();
+  if (h) h->distance += c->offset;
+  return h;
 }
 
 }  // namespace
@@ -101,7 +140,7 @@ std::vector<Point3> CadOracle::initial_points(PatchId patch) const {
 std::optional<CadOracle::Crossing> CadOracle::first_crossing(const Point3& a,
                                                              const Point3& b) const {
   try {
-    const std::optional<cad::RayHit> h = first_hit(*model_, serial_, a, b - a);
+    const std::optional<cad::RayHit> h = first_hit(*model_, serial_, a, b);
     if (!h) return std::nullopt;
     return Crossing{h->point, model_->patches[h->face].id, h->distance, h->cosine, h->tangent};
   } catch (const Standard_Failure& e) {
@@ -116,7 +155,7 @@ SubdomainId CadOracle::locate(const Point3& p) const {
   try {
     SubdomainId answer = kOutside;
     for (const Point3& dir : kRays) {
-      const std::optional<cad::RayHit> h = first_hit(m, serial_, p, reach * dir);
+      const std::optional<cad::RayHit> h = first_hit(m, serial_, p, p + reach * dir);
       if (!h) return kOutside;  // the ray leaves the domain without crossing a face
       const cad::FacePatch& f = m.faces[h->face];
       // The ray leaves the side the normal points out of when it goes along the normal.
@@ -131,11 +170,13 @@ SubdomainId CadOracle::locate(const Point3& p) const {
 
 std::optional<SurfaceHit> CadOracle::intersect(const Point3& a, const Point3& b) const {
   const Model& m = *model_;
-  const Point3 d = b - a;
+  // Everything happens on the part of [a, b] in the model box (see clip_to_box).
+  const std::optional<Clipped> c = clip_to_box(m.box, a, b);
+  if (!c) return std::nullopt;  // both ends outside the box, hence outside the domain
+  const Point3 ca = c->a, d = c->b - c->a;
   const double len = norm(d);
-  if (!(len > 0) || !std::isfinite(len)) return std::nullopt;
   try {
-    const std::optional<cad::RayHit> h = first_hit(m, serial_, a, d);
+    const std::optional<cad::RayHit> h = first_hit(m, serial_, ca, c->b);
     if (h && !(h->tangent && std::fabs(h->cosine) < 1e-6)) {
       return SurfaceHit{h->point, m.patches[h->face].id};
     }
@@ -143,20 +184,20 @@ std::optional<SurfaceHit> CadOracle::intersect(const Point3& a, const Point3& b)
     rethrow_occt(e, "intersect");
   }
   // No transversal crossing found (a grazing segment, an edge): bracket the label change.
-  const SubdomainId la = locate(a), lb = locate(b);
+  const SubdomainId la = locate(ca), lb = locate(c->b);
   if (la == lb) return std::nullopt;
   double lo = 0, hi = 1;
   SubdomainId lhi = lb;
   for (int it = 0; it < 200 && (hi - lo) * len > m.tolerance; ++it) {
     const double mid = 0.5 * (lo + hi);
-    const SubdomainId l = locate(a + mid * d);
+    const SubdomainId l = locate(ca + mid * d);
     if (l == la) {
       lo = mid;
     } else {
       hi = mid, lhi = l;
     }
   }
-  const Point3 x = a + (0.5 * (lo + hi)) * d;
+  const Point3 x = ca + (0.5 * (lo + hi)) * d;
   const SubdomainId s0 = std::min(la, lhi), s1 = std::max(la, lhi);
   std::optional<PatchId> fallback;
   for (std::size_t i = 0; i < m.patches.size(); ++i) {

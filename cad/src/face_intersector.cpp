@@ -16,6 +16,8 @@ constexpr int kMaxDepth = 8;    // subdivision levels below a tessellation trian
 constexpr int kMaxWork = 4000;  // subdivisions per query before OpenCASCADE takes over
 constexpr double kGrow = 1e-9;  // barycentric slack of "a root inside the triangle"
 constexpr double kTangentCosine = 1e-6;
+// How good a crossing is, among crossings at the same place.
+constexpr int kGrazing = 0, kOnBoundary = 1, kTransversal = 2;
 
 // Entry and exit parameters (in [lo, hi]) of line a + w d through box b; false if it misses.
 bool clip(const Point3& a, const Point3& d, const Box3& b, double& lo, double& hi) {
@@ -58,7 +60,11 @@ RayQuery::RayQuery(const CadOracle::Model& m, ThreadState& ts, const Point3& a, 
   ts_.begin_query();
 }
 
-double RayQuery::reach() const { return best_ ? best_->distance : length_ + m_.tolerance; }
+double RayQuery::reach() const {
+  if (!best_) return length_ + m_.tolerance;
+  // A better crossing within the tolerance of a grazing or on-boundary one replaces it.
+  return best_rank_ < kTransversal ? best_->distance + m_.tolerance : best_->distance;
+}
 
 void RayQuery::visit(int index) {
   const Candidate& c = m_.candidates[index];
@@ -230,8 +236,17 @@ void RayQuery::consider(int face, double w, double u, double v, const Point3& po
   h.face = face;
   h.point = point;
   h.cosine = nn > 0 ? dot(n, d_) / nn : 0.0;
-  h.tangent = tangent || state == TopAbs_ON || std::fabs(h.cosine) < kTangentCosine;
+  const bool grazing = tangent || std::fabs(h.cosine) < kTangentCosine;
+  h.tangent = grazing || state == TopAbs_ON;
+  const int rank = grazing ? kGrazing : (state == TopAbs_ON ? kOnBoundary : kTransversal);
+  // Crossings within the tolerance of each other are the same place: the better
+  // one wins (a segment along a wall grazes it where it crosses the face below).
+  if (best_ && std::fabs(w - best_->distance) <= m_.tolerance &&
+      (rank < best_rank_ || (rank == best_rank_ && w >= best_->distance))) {
+    return;
+  }
   best_ = h;
+  best_rank_ = rank;
 }
 
 void RayQuery::occt(int face, double w0, double w1) {

@@ -19,7 +19,9 @@
 //    tessellation).
 // Each crossing is classified in (u, v): inside cells are IN without the 2D
 // classifier, outside cells are OUT, boundary cells ask the face's classifier
-// (IN, or ON = on the boundary, which marks the hit tangent).
+// (IN, or ON = on the boundary, which marks the hit tangent). The nearest
+// crossing wins, except that among crossings within the tolerance of each other
+// a transversal one beats one on a face boundary, which beats a grazing one.
 #pragma once
 
 #include <optional>
@@ -68,6 +70,7 @@ class RayQuery {
   double slack_;  // rounding allowance of the window tests
   int work_ = 0;  // subdivisions so far in this query
   std::optional<RayHit> best_;
+  int best_rank_ = 0;  // grazing 0, on a face boundary 1, transversal 2
 };
 
 }  // namespace rdmesh::cad
