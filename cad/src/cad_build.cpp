@@ -92,6 +92,32 @@ void fuse_solids(const ReadShape& read, CadOracle::Model& m, const std::string& 
                   " solids: " + std::to_string(m.pieces.size()) + " conformal pieces");
 }
 
+// Planes, cylinders, cones and spheres are intersected in closed form.
+void set_kind(FacePatch& f) {
+  const GeomAdaptor_Surface adaptor(f.surface);
+  switch (adaptor.GetType()) {
+    case GeomAbs_Plane:
+      f.kind = SurfaceKind::plane;
+      f.plane = adaptor.Plane();
+      break;
+    case GeomAbs_Cylinder:
+      f.kind = SurfaceKind::cylinder;
+      f.cylinder = adaptor.Cylinder();
+      break;
+    case GeomAbs_Cone:
+      f.kind = SurfaceKind::cone;
+      f.cone = adaptor.Cone();
+      break;
+    case GeomAbs_Sphere:
+      f.kind = SurfaceKind::sphere;
+      f.sphere = adaptor.Sphere();
+      break;
+    default:
+      f.kind = SurfaceKind::parametric;
+      break;
+  }
+}
+
 void collect_faces(CadOracle::Model& m, TopTools_IndexedMapOfShape& patch_faces) {
   TopTools_IndexedDataMapOfShapeListOfShape face_solids;
   for (const SolidPiece& p : m.pieces) {
@@ -121,12 +147,7 @@ void collect_faces(CadOracle::Model& m, TopTools_IndexedMapOfShape& patch_faces)
     BRepTools::UVBounds(face, fp.u0, fp.u1, fp.v0, fp.v1);
     fp.box = box_of(face, 0);
     fp.classifier = std::make_unique<BRepTopAdaptor_FClass2d>(face, BRep_Tool::Tolerance(face));
-    const GeomAdaptor_Surface adaptor(fp.surface);
-    const GeomAbs_SurfaceType type = adaptor.GetType();
-    if (type == GeomAbs_Plane) fp.plane = adaptor.Plane();
-    fp.quadric = type == GeomAbs_Cylinder || type == GeomAbs_Cone || type == GeomAbs_Sphere ||
-                 type == GeomAbs_Torus;
-    fp.spline = type == GeomAbs_BSplineSurface || type == GeomAbs_BezierSurface;
+    set_kind(fp);
     fp.outward_of = SubdomainId(first_owner);
     fp.inward_of = SubdomainId(labels[0] == first_owner ? labels[1] : labels[0]);
     const int id = static_cast<int>(m.faces.size()) + 1;
@@ -242,6 +263,7 @@ std::unique_ptr<CadOracle::Model> build_model(ReadShape read, const std::string&
     }
     collect_curves(*m, patch_faces);
     compute_seeds(*m);
+    build_accelerator(*m);
   } catch (const InputError& e) {
     if (!e.file().empty() || source.empty()) throw;
     throw InputError(source, e.what());

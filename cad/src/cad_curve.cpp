@@ -104,21 +104,41 @@ double EdgeCurve::closest(const Point3& p, double ta, double tb) const {
     const double d = d2(i == n ? tb : ta + i * h);
     if (d < best_d) best_d = d, best = i;
   }
-  // Golden-section search around the best sample.
+  // Around the best sample, the root of f = (C(t) - p) . C'(t): safeguarded
+  // Newton (f' = |C'|^2 + (C - p) . C''), bisecting when a step leaves the bracket.
   double lo = std::max(ta, ta + (best - 1) * h), hi = std::min(tb, ta + (best + 1) * h);
-  const double g = 0.5 * (std::sqrt(5.0) - 1);
-  double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
-  double f1 = d2(x1), f2 = d2(x2);
-  for (int i = 0; i < 80 && hi - lo > 1e-15 * (t1_ - t0_); ++i) {
-    if (f1 < f2) {
-      hi = x2, x2 = x1, f2 = f1, x1 = hi - g * (hi - lo), f1 = d2(x1);
-    } else {
-      lo = x1, x1 = x2, f1 = f2, x2 = lo + g * (hi - lo), f2 = d2(x2);
+  const Point3 blend = (1.0 / (t1_ - t0_)) * (d1_ - d0_);
+  auto f = [&](double t, double* slope) {
+    gp_Pnt q;
+    gp_Vec v1, v2;
+    curve_->D2(t, q, v1, v2);
+    const double s = (t - t0_) / (t1_ - t0_);
+    const Point3 e = to_point(q.XYZ()) + (1 - s) * d0_ + s * d1_ - p;
+    const Point3 c1 = to_point(v1.XYZ()) + blend;
+    if (slope) *slope = dot(c1, c1) + dot(e, to_point(v2.XYZ()));
+    return dot(e, c1);
+  };
+  double t = lo;
+  const double flo = f(lo, nullptr), fhi = f(hi, nullptr);
+  if (flo >= 0) {
+    t = lo;  // distance growing from lo on
+  } else if (fhi <= 0) {
+    t = hi;  // still falling at hi
+  } else {
+    t = 0.5 * (lo + hi);
+    for (int i = 0; i < 60 && hi - lo > 1e-15 * (t1_ - t0_); ++i) {
+      double slope = 0;
+      const double ft = f(t, &slope);
+      if (ft == 0) break;
+      (ft < 0 ? lo : hi) = t;
+      double next = slope > 0 ? t - ft / slope : 0.5 * (lo + hi);
+      if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+      const bool done = std::fabs(next - t) <= 1e-15 * (t1_ - t0_);
+      t = next;
+      if (done) break;
     }
   }
-  double t = f1 < f2 ? x1 : x2;
-  const double ft = std::min(f1, f2);
-  if (best_d < ft) t = best == n ? tb : ta + best * h;
+  if (best_d < d2(t)) t = best == n ? tb : ta + best * h;
   return std::clamp(t, ta, tb);
 }
 

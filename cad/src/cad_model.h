@@ -8,14 +8,19 @@
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
 #include <TopoDS_Solid.hxx>
+#include <gp_Cone.hxx>
+#include <gp_Cylinder.hxx>
 #include <gp_Pln.hxx>
+#include <gp_Sphere.hxx>
 #include <memory>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "face_tessellation.h"
 #include "rdmesh/cad_oracle.h"
+#include "rdmesh/detail/triangle_bvh.h"
 #include "rdmesh/errors.h"
 
 namespace rdmesh::cad {
@@ -62,22 +67,61 @@ struct SolidPiece {
   Box3 box;
 };
 
+/// How a face's crossings with a line are computed (face_intersector.cpp).
+enum class SurfaceKind {
+  plane,       ///< in closed form (one root)
+  cylinder,    ///< in closed form (a quadratic in the line parameter)
+  cone,        ///< in closed form (a quadratic)
+  sphere,      ///< in closed form (a quadratic)
+  parametric,  ///< any other surface: Newton from the tessellation's triangles
+};
+
+/// One edge of a face as a 3D curve with a coarse polyline, for project().
+struct BoundaryCurve {
+  Handle(Geom_Curve) curve;  // with the edge's location applied
+  std::vector<double> t;     // increasing parameters of the polyline's points
+  std::vector<Point3> points;
+};
+
 struct FacePatch {
   TopoDS_Face face;
   Handle(Geom_Surface) surface;  // with the face's location applied
   double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
   Box3 box;
+  /// Used while building the model (seeds, cells); queries use per-thread copies.
   std::unique_ptr<BRepTopAdaptor_FClass2d> classifier;
-  /// Set for planar faces: intersected analytically, then classified in (u, v).
-  std::optional<gp_Pln> plane;
-  /// Cylinder, cone, sphere or torus: intersected in closed form by
-  /// IntCurveSurface_HInter (no polyhedron), then classified in (u, v).
-  bool quadric = false;
-  /// B-spline or Bezier: intersected against a per-thread sampled polyhedron.
-  bool spline = false;
+  SurfaceKind kind = SurfaceKind::parametric;
+  gp_Pln plane;  // the analytic surface matching `kind`
+  gp_Cylinder cylinder;
+  gp_Cone cone;
+  gp_Sphere sphere;
+  /// Where the face lies in its (u, v) box: inside cells skip the classifier.
+  UvCells cells;
+  /// This face's triangles are Model::triangles[first_triangle, end_triangle).
+  int first_triangle = 0, end_triangle = 0;
+  /// Over this face's triangles (indices relative to first_triangle), for project().
+  TriangleBvh triangle_tree;
+  std::vector<BoundaryCurve> boundary;
   /// The face's normal (surface normal, flipped for a reversed face) points out
   /// of subdomain `outward_of` into subdomain `inward_of` (either may be 0).
   SubdomainId outward_of, inward_of;
+};
+
+/// An item of the candidate tree: a triangle of a parametric face, or a whole
+/// face (triangle -1) answered in closed form or, without a tessellation, by
+/// OpenCASCADE.
+struct Candidate {
+  int face = 0;
+  int triangle = -1;  ///< index into Model::triangles
+};
+
+/// The nearest crossing of a ray with a face.
+struct RayHit {
+  double distance = 0;  ///< along the ray
+  int face = 0;         ///< index of the patch's face
+  Point3 point;
+  double cosine = 0;     ///< between the face's outward normal and the ray
+  bool tangent = false;  ///< grazing, or on the face's boundary
 };
 
 }  // namespace rdmesh::cad
@@ -90,6 +134,13 @@ struct CadOracle::Model {
   std::vector<cad::SolidPiece> pieces;
   std::vector<SubdomainInfo> subdomains;
   std::vector<cad::FacePatch> faces;  // index = patch id - 1
+  /// Every face's tessellation (FacePatch::first_triangle..).
+  std::vector<cad::SurfaceTriangle> triangles;
+  /// What a segment is tested against, in one tree over their boxes: the
+  /// triangles of parametric faces (boxes inflated by their deviation), and
+  /// every other face as a whole (its box).
+  std::vector<cad::Candidate> candidates;
+  TriangleBvh candidate_tree;
   std::vector<PatchInfo> patches;
   std::vector<std::vector<Point3>> seeds;  // index = patch id - 1
   std::vector<CurveInfo> curve_infos;
@@ -105,6 +156,9 @@ namespace cad {
 std::unique_ptr<CadOracle::Model> build_model(ReadShape read, const std::string& source);
 /// Picks points inside each face from a coarse tessellation (cad_seeds.cpp).
 void compute_seeds(CadOracle::Model& model);
+/// Builds each face's cells, triangles and boundary curves, and the triangle trees
+/// (face_tessellation.cpp, face_boundary.cpp).
+void build_accelerator(CadOracle::Model& model);
 /// Removes OpenCASCADE's message printers (once; its translators print to stdout).
 void silence_opencascade();
 /// "STANDARD_FAILURE_TYPE: message" of an OpenCASCADE exception.

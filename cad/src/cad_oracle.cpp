@@ -1,67 +1,24 @@
-// CadOracle queries. OpenCASCADE's intersectors and classifiers keep state, so
-// each thread lazily builds its own per face / per solid and keeps them in a
-// small per-thread cache keyed by the oracle's serial number.
-#include <BRepBuilderAPI_MakeVertex.hxx>
-#include <BRepExtrema_DistShapeShape.hxx>
+// CadOracle queries: the nearest crossing along a segment (face_intersector.h)
+// found through the triangle tree, locate() by rays, intersect() with its
+// bisection fallback, project() (face_projection.h). OpenCASCADE's stateful
+// objects live in per-thread caches (thread_state.h).
 #include <BRepGProp.hxx>
-#include <Bnd_BoundSortBox.hxx>
-#include <ElSLib.hxx>
 #include <GProp_GProps.hxx>
-#include <GeomAPI_ProjectPointOnSurf.hxx>
-#include <GeomAdaptor_Curve.hxx>
-#include <GeomAdaptor_Surface.hxx>
-#include <Geom_Line.hxx>
-#include <IntCurveSurface_HInter.hxx>
-#include <IntCurveSurface_IntersectionPoint.hxx>
-#include <IntCurveSurface_ThePolygonOfHInter.hxx>
-#include <IntCurveSurface_ThePolyhedronOfHInter.hxx>
-#include <IntCurvesFace_Intersector.hxx>
 #include <algorithm>
-#include <array>
 #include <atomic>
 #include <cmath>
-#include <gp_Lin.hxx>
-#include <gp_Pnt2d.hxx>
+#include <limits>
 
 #include "cad_model.h"
+#include "face_intersector.h"
+#include "face_projection.h"
+#include "rdmesh/detail/triangle_bvh.h"
+#include "thread_state.h"
 
 namespace rdmesh {
 namespace {
 
 using cad::describe;
-
-gp_Pnt to_gp(const Point3& p) { return {p.x, p.y, p.z}; }
-Point3 to_point(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
-
-// A sampled free-form face: its polyhedron seeds IntCurveSurface_HInter.
-struct SampledFace {
-  Handle(GeomAdaptor_Surface) surface;
-  std::unique_ptr<IntCurveSurface_ThePolyhedronOfHInter> polyhedron;
-  Bnd_BoundSortBox boxes;
-};
-
-struct ThreadCache {
-  std::uint64_t serial = 0;
-  std::vector<std::unique_ptr<IntCurvesFace_Intersector>> faces;
-  std::vector<std::unique_ptr<SampledFace>> sampled;
-  std::vector<std::pair<double, int>> candidates;  // (box entry, face index), reused
-};
-
-ThreadCache& cache_for(std::uint64_t serial, std::size_t faces) {
-  thread_local std::array<ThreadCache, 4> caches;
-  thread_local std::size_t next = 0;
-  for (ThreadCache& c : caches) {
-    if (c.serial == serial) return c;
-  }
-  ThreadCache& c = caches[next];
-  next = (next + 1) % caches.size();
-  c.serial = serial;
-  c.faces.clear();
-  c.faces.resize(faces);
-  c.sampled.clear();
-  c.sampled.resize(faces);
-  return c;
-}
 
 std::atomic<std::uint64_t> next_serial{1};
 
@@ -93,6 +50,65 @@ constexpr Point3 kRays[3] = {{0.8017837257372732, 0.5345224838248488, 0.26726124
   throw OracleError(std::string("OpenCASCADE failed in ") + query + ": " + describe(e));
 }
 
+// Segment [a, b] within the model box (every face lies in it), and how far
+// along [a, b] its start lies. Computed from the end nearer the box along the
+// unit direction: a Voronoi ray may reach 1e20, and coordinates that far from
+// the box carry no digits near it.
+struct Clipped {
+  Point3 a, b;
+  double offset = 0;
+};
+std::optional<Clipped> clip_to_box(const Box3& box, const Point3& a, const Point3& b) {
+  const Point3 d = b - a;
+  const double len = norm(d);
+  if (!(len > 0) || !std::isfinite(len)) return std::nullopt;
+  const bool from_a = squared_distance(box, a) <= squared_distance(box, b);
+  const Point3 o = from_a ? a : b, dir = (from_a ? 1 / len : -1 / len) * d;
+  double s0 = 0, s1 = len;  // o + s dir, s in [s0, s1], lies in the box
+  const double po[3] = {o.x, o.y, o.z}, pd[3] = {dir.x, dir.y, dir.z};
+  const double lo[3] = {box.lo.x, box.lo.y, box.lo.z}, hi[3] = {box.hi.x, box.hi.y, box.hi.z};
+  for (int k = 0; k < 3; ++k) {
+    if (pd[k] == 0) {
+      if (po[k] < lo[k] || po[k] > hi[k]) return std::nullopt;
+      continue;
+    }
+    double ta = (lo[k] - po[k]) / pd[k], tb = (hi[k] - po[k]) / pd[k];
+    if (ta > tb) std::swap(ta, tb);
+    s0 = std::max(s0, ta), s1 = std::min(s1, tb);
+    if (s0 > s1) return std::nullopt;
+  }
+  const Point3 p0 = o + s0 * dir, p1 = o + s1 * dir;
+  if (from_a) return Clipped{p0, p1, s0};
+  return Clipped{p1, p0, len - s1};
+}
+
+// The first crossing of segment [a, b] with a face: the candidates whose boxes
+// the segment meets, nearest box first, until none can be nearer. Its distance
+// is from a.
+std::optional<cad::RayHit> first_hit(const CadOracle::Model& m, std::uint64_t serial,
+                                     const Point3& a, const Point3& b) {
+  const std::optional<Clipped> c = clip_to_box(m.box, a, b);
+  if (!c) return std::nullopt;
+  const Point3 d = c->b - c->a;
+  const double len = norm(d);
+  if (!(len > 0)) return std::nullopt;
+  cad::RayQuery query(m, cad::thread_state(m, serial), c->a, (1 / len) * d, len);
+  double bound = query.reach();
+  m.candidate_tree.nearest(
+      [&](const Box3& box) {
+        const double t = box_entry(c->a, d, box);
+        return t < 0 ? std::numeric_limits<double>::infinity() : t * len;
+      },
+      [&](int t, double& reach) {
+        query.visit(t);
+        reach = query.reach();
+      },
+      bound);
+  std::optional<cad::RayHit> h = query.best();
+  if (h) h->distance += c->offset;
+  return h;
+}
+
 }  // namespace
 
 CadOracle::CadOracle(std::unique_ptr<Model> model)
@@ -121,140 +137,15 @@ std::vector<Point3> CadOracle::initial_points(PatchId patch) const {
   return model_->seeds[patch.value - 1];
 }
 
-void CadOracle::plane_hit(const cad::FacePatch& f, int index, const Point3& a, const Point3& d,
-                          double len, std::optional<RayHit>& best) const {
-  const gp_Ax3& ax = f.plane->Position();
-  const gp_Dir nd = ax.XDirection().Crossed(ax.YDirection());  // du x dv
-  const Point3 n{nd.X(), nd.Y(), nd.Z()};
-  const gp_Pnt& o = ax.Location();
-  const double denom = dot(n, d);
-  if (denom == 0) return;
-  const double t = dot(n, Point3{o.X(), o.Y(), o.Z()} - a) / denom;
-  if (!(t >= 0 && t <= 1) || (best && t * len >= best->distance)) return;
-  const Point3 x = a + t * d;
-  double u, v;
-  ElSLib::Parameters(*f.plane, to_gp(x), u, v);
-  const TopAbs_State state = f.classifier->Perform(gp_Pnt2d(u, v));
-  if (state != TopAbs_IN && state != TopAbs_ON) return;
-  RayHit h;
-  h.distance = t * len;
-  h.face = index;
-  h.point = x;
-  h.tangent = state == TopAbs_ON;
-  h.cosine = denom / len * (f.face.Orientation() == TopAbs_REVERSED ? -1 : 1);
-  best = h;
-}
-
-void CadOracle::quadric_hit(const cad::FacePatch& f, int index, const Point3& a, const Point3& d,
-                            double len, std::optional<RayHit>& best) const {
-  const double upper = best ? best->distance : len;
-  if (!(upper > 1e-12 * len)) return;
-  const Handle(Geom_Line) line = new Geom_Line(to_gp(a), gp_Dir(d.x, d.y, d.z));
-  const Handle(GeomAdaptor_Curve) curve = new GeomAdaptor_Curve(line, 0.0, upper);
-  const Handle(GeomAdaptor_Surface) surface =
-      new GeomAdaptor_Surface(f.surface, f.u0, f.u1, f.v0, f.v1);
-  IntCurveSurface_HInter inter;
-  if (f.quadric) {
-    inter.Perform(curve, surface);
-  } else {
-    // Free-form face: sample it once per thread, then reuse the polyhedron.
-    ThreadCache& cache = cache_for(serial_, model_->faces.size());
-    std::unique_ptr<SampledFace>& sf = cache.sampled[index];
-    if (!sf) {
-      sf = std::make_unique<SampledFace>();
-      sf->surface = surface;
-      const int nu =
-          std::clamp(surface->NbUIntervals(GeomAbs_C2) * (surface->UDegree() + 1), 10, 50);
-      const int nv =
-          std::clamp(surface->NbVIntervals(GeomAbs_C2) * (surface->VDegree() + 1), 10, 50);
-      sf->polyhedron = std::make_unique<IntCurveSurface_ThePolyhedronOfHInter>(
-          sf->surface, nu, nv, f.u0, f.v0, f.u1, f.v1);
-      sf->polyhedron->FillBounding();
-      sf->boxes.Initialize(sf->polyhedron->Bounding(), sf->polyhedron->ComponentsBounding());
-    }
-    const IntCurveSurface_ThePolygonOfHInter polygon(curve, 0.0, upper, 3);
-    inter.Perform(curve, polygon, sf->surface, *sf->polyhedron, sf->boxes);
+std::optional<CadOracle::Crossing> CadOracle::first_crossing(const Point3& a,
+                                                             const Point3& b) const {
+  try {
+    const std::optional<cad::RayHit> h = first_hit(*model_, serial_, a, b);
+    if (!h) return std::nullopt;
+    return Crossing{h->point, model_->patches[h->face].id, h->distance, h->cosine, h->tangent};
+  } catch (const Standard_Failure& e) {
+    rethrow_occt(e, "first_crossing");
   }
-  if (!inter.IsDone()) return;
-  for (int k = 1; k <= inter.NbPoints(); ++k) {
-    const IntCurveSurface_IntersectionPoint& ip = inter.Point(k);
-    const double w = ip.W();
-    if (w < 0 || w > len || (best && w >= best->distance)) continue;
-    const TopAbs_State state = f.classifier->Perform(gp_Pnt2d(ip.U(), ip.V()));
-    if (state != TopAbs_IN && state != TopAbs_ON) continue;
-    RayHit h;
-    h.distance = w;
-    h.face = index;
-    h.point = to_point(ip.Pnt());
-    h.tangent = ip.Transition() == IntCurveSurface_Tangent || state == TopAbs_ON;
-    gp_Pnt p;
-    gp_Vec du, dv;
-    f.surface->D1(ip.U(), ip.V(), p, du, dv);
-    gp_Vec n = du.Crossed(dv);
-    if (f.face.Orientation() == TopAbs_REVERSED) n.Reverse();
-    const double nn = n.Magnitude();
-    h.cosine = nn > 0 ? (n.X() * d.x + n.Y() * d.y + n.Z() * d.z) / (nn * len) : 0.0;
-    best = h;
-  }
-}
-
-std::optional<CadOracle::RayHit> CadOracle::first_hit(const Point3& a, const Point3& d) const {
-  const Model& m = *model_;
-  const double len = norm(d);
-  if (!(len > 0)) return std::nullopt;
-  ThreadCache& cache = cache_for(serial_, m.faces.size());
-  std::vector<std::pair<double, int>>& cand = cache.candidates;
-  cand.clear();
-  for (std::size_t i = 0; i < m.faces.size(); ++i) {
-    const double t = box_entry(a, d, m.faces[i].box);
-    if (t >= 0) cand.emplace_back(t, static_cast<int>(i));
-  }
-  std::sort(cand.begin(), cand.end());
-  const gp_Lin line(to_gp(a), gp_Dir(d.x, d.y, d.z));
-  std::optional<RayHit> best;
-  for (const auto& [entry, i] : cand) {
-    if (best && entry * len > best->distance) break;  // boxes sorted by entry
-    if (m.faces[i].plane) {
-      plane_hit(m.faces[i], i, a, d, len, best);
-      continue;
-    }
-    if (m.faces[i].quadric || m.faces[i].spline) {
-      try {
-        quadric_hit(m.faces[i], i, a, d, len, best);
-        continue;
-      } catch (const Standard_Failure&) {
-        // fall through to the general intersector
-      }
-    }
-    std::unique_ptr<IntCurvesFace_Intersector>& x = cache.faces[i];
-    if (!x) x = std::make_unique<IntCurvesFace_Intersector>(m.faces[i].face, 0.1 * m.tolerance);
-    const double upper = best ? best->distance : len;
-    if (!(upper > 1e-12 * len)) continue;  // a hit at the start point already
-    try {
-      x->Perform(line, 0.0, upper);
-    } catch (const Standard_Failure&) {
-      continue;  // a degenerate sub-problem of this face: no crossing found there
-    }
-    if (!x->IsDone()) continue;
-    for (int k = 1; k <= x->NbPnt(); ++k) {
-      const double w = x->WParameter(k);
-      if (w < 0 || w > len || (best && w >= best->distance)) continue;
-      RayHit h;
-      h.distance = w;
-      h.face = i;
-      h.point = to_point(x->Pnt(k));
-      h.tangent = x->Transition(k) == IntCurveSurface_Tangent || x->State(k) == TopAbs_ON;
-      gp_Pnt p;
-      gp_Vec du, dv;
-      m.faces[i].surface->D1(x->UParameter(k), x->VParameter(k), p, du, dv);
-      gp_Vec n = du.Crossed(dv);
-      if (m.faces[i].face.Orientation() == TopAbs_REVERSED) n.Reverse();
-      const double nn = n.Magnitude();
-      h.cosine = nn > 0 ? (n.X() * d.x + n.Y() * d.y + n.Z() * d.z) / (nn * len) : 0.0;
-      best = h;
-    }
-  }
-  return best;
 }
 
 SubdomainId CadOracle::locate(const Point3& p) const {
@@ -264,7 +155,7 @@ SubdomainId CadOracle::locate(const Point3& p) const {
   try {
     SubdomainId answer = kOutside;
     for (const Point3& dir : kRays) {
-      const std::optional<RayHit> h = first_hit(p, reach * dir);
+      const std::optional<cad::RayHit> h = first_hit(m, serial_, p, p + reach * dir);
       if (!h) return kOutside;  // the ray leaves the domain without crossing a face
       const cad::FacePatch& f = m.faces[h->face];
       // The ray leaves the side the normal points out of when it goes along the normal.
@@ -279,11 +170,13 @@ SubdomainId CadOracle::locate(const Point3& p) const {
 
 std::optional<SurfaceHit> CadOracle::intersect(const Point3& a, const Point3& b) const {
   const Model& m = *model_;
-  const Point3 d = b - a;
+  // Everything happens on the part of [a, b] in the model box (see clip_to_box).
+  const std::optional<Clipped> c = clip_to_box(m.box, a, b);
+  if (!c) return std::nullopt;  // both ends outside the box, hence outside the domain
+  const Point3 ca = c->a, d = c->b - c->a;
   const double len = norm(d);
-  if (!(len > 0) || !std::isfinite(len)) return std::nullopt;
   try {
-    const std::optional<RayHit> h = first_hit(a, d);
+    const std::optional<cad::RayHit> h = first_hit(m, serial_, ca, c->b);
     if (h && !(h->tangent && std::fabs(h->cosine) < 1e-6)) {
       return SurfaceHit{h->point, m.patches[h->face].id};
     }
@@ -291,20 +184,20 @@ std::optional<SurfaceHit> CadOracle::intersect(const Point3& a, const Point3& b)
     rethrow_occt(e, "intersect");
   }
   // No transversal crossing found (a grazing segment, an edge): bracket the label change.
-  const SubdomainId la = locate(a), lb = locate(b);
+  const SubdomainId la = locate(ca), lb = locate(c->b);
   if (la == lb) return std::nullopt;
   double lo = 0, hi = 1;
   SubdomainId lhi = lb;
   for (int it = 0; it < 200 && (hi - lo) * len > m.tolerance; ++it) {
     const double mid = 0.5 * (lo + hi);
-    const SubdomainId l = locate(a + mid * d);
+    const SubdomainId l = locate(ca + mid * d);
     if (l == la) {
       lo = mid;
     } else {
       hi = mid, lhi = l;
     }
   }
-  const Point3 x = a + (0.5 * (lo + hi)) * d;
+  const Point3 x = ca + (0.5 * (lo + hi)) * d;
   const SubdomainId s0 = std::min(la, lhi), s1 = std::max(la, lhi);
   std::optional<PatchId> fallback;
   for (std::size_t i = 0; i < m.patches.size(); ++i) {
@@ -320,22 +213,11 @@ std::optional<SurfaceHit> CadOracle::intersect(const Point3& a, const Point3& b)
 std::optional<Point3> CadOracle::project(const Point3& p, PatchId patch) const {
   const Model& m = *model_;
   if (patch.value < 1 || patch.value > static_cast<int>(m.faces.size())) return std::nullopt;
-  const cad::FacePatch& f = m.faces[patch.value - 1];
   try {
-    GeomAPI_ProjectPointOnSurf proj(to_gp(p), f.surface, f.u0, f.u1, f.v0, f.v1);
-    if (proj.NbPoints() > 0) {
-      double u, v;
-      proj.LowerDistanceParameters(u, v);
-      const TopAbs_State s = f.classifier->Perform(gp_Pnt2d(u, v));
-      if (s == TopAbs_IN || s == TopAbs_ON) return to_point(proj.NearestPoint());
-    }
-    // The foot point is outside the trimmed face: the closest point is on its boundary.
-    BRepExtrema_DistShapeShape dist(BRepBuilderAPI_MakeVertex(to_gp(p)).Vertex(), f.face);
-    if (dist.IsDone() && dist.NbSolution() > 0) return to_point(dist.PointOnShape2(1));
+    return cad::project_on_face(m, cad::thread_state(m, serial_), patch.value - 1, p);
   } catch (const Standard_Failure&) {
     return std::nullopt;  // "does not converge"
   }
-  return std::nullopt;
 }
 
 double CadOracle::exact_volume(SubdomainId id) const {

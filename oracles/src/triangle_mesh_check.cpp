@@ -6,9 +6,9 @@
 #include <cmath>
 #include <sstream>
 
+#include "rdmesh/detail/triangle_bvh.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/triangle_mesh_check.h"
-#include "triangle_mesh_bvh.h"
 
 namespace rdmesh {
 namespace {

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <cstring>
 
+#include "rdmesh/detail/triangle_bvh.h"
 #include "rdmesh/triangle_mesh_oracle.h"
-#include "triangle_mesh_bvh.h"
 
 namespace rdmesh {
 namespace {

@@ -19,8 +19,9 @@ namespace rdmesh {
 /// - every listed patch has >= 3 initial points, each on the patch: project()
 ///   returns it back, and the labels across the surface at it are the patch sides;
 /// - project() of perturbed initial points lands on the patch, near the original;
-/// - the sharp features pass expect_feature_conformance.
-void expect_oracle_conformance(const DomainOracle& oracle, int samples = 2000, unsigned seed = 1);
+/// - the sharp features pass expect_feature_conformance (unless `with_features` is false).
+void expect_oracle_conformance(const DomainOracle& oracle, int samples = 2000, unsigned seed = 1,
+                               bool with_features = true);
 
 /// Checks the curves and corners (feature_conformance.cpp):
 /// - curve ids 1..n, corner ids 1..m; a closed curve has corners 0, an open one

@@ -20,17 +20,27 @@
 // first appearance. Each curve is the edge's own 3D curve, shifted by a linear
 // blend (at most the vertex tolerance) so that it ends exactly at its corners.
 //
-// Queries. intersect() intersects the segment with the true faces whose boxes
-// it meets (IntCurvesFace_Intersector), visiting the boxes in order of entry
-// along the segment, and returns the hit nearest to a. locate() casts a ray
-// from p with the same machinery and reads the label from the first face it
-// crosses and the face's orientation (normal out of one side), retrying along
-// another ray when the first crossing grazes or lies on a face boundary; so
-// locate() and intersect() agree by construction; initial_points() evaluates the true surface at
-// interior points of a coarse BRepMesh tessellation (used only for seeding); project() is
-// GeomAPI_ProjectPointOnSurf, with BRepExtrema when the foot point falls
-// outside the face. Queries are const and thread-safe: OpenCASCADE's stateful
-// intersectors and classifiers are kept in per-thread caches.
+// Queries. Every face has a tessellation used only to find where to look: an
+// adaptive (u, v) grid of flat triangles, each with a measured bound on its
+// distance to the surface and a cone of the surface normals over it, in one
+// box tree; the (u, v) cells also record whether they are inside the face,
+// outside it or on its boundary. intersect() visits the triangles whose
+// inflated boxes the segment meets, nearest first, and stops when nothing
+// nearer can exist; from each it computes the crossing exactly: in closed form
+// on planes, cylinders, cones and spheres, by Newton on the true surface
+// otherwise (subdividing triangles the segment grazes, with OpenCASCADE's own
+// intersectors as the fallback where Newton cannot decide), and classifies it
+// in (u, v). locate() casts a ray from p with the same machinery and reads the
+// label from the first face it crosses and the face's orientation (normal out
+// of one side), retrying along another ray when the first crossing grazes or
+// lies on a face boundary; so locate() and intersect() agree by construction.
+// project() runs Newton from the nearest point of the face's tessellation, and
+// on the face's edge curves when the foot falls outside the face
+// (GeomAPI_ProjectPointOnSurf, then BRepExtrema, when that fails).
+// initial_points() evaluates the true surface at interior points of a coarse
+// BRepMesh tessellation (used only for seeding). Queries are const and
+// thread-safe: OpenCASCADE's stateful adaptors, classifiers and intersectors
+// are kept in per-thread caches.
 //
 // Errors. Every OpenCASCADE exception is caught here and rethrown as
 // InputError (while loading) or OracleError (in queries).
@@ -44,10 +54,6 @@
 #include "rdmesh/oracle.h"
 
 namespace rdmesh {
-
-namespace cad {
-struct FacePatch;
-}
 
 /// How a CAD file is loaded.
 struct CadOptions {
@@ -91,23 +97,24 @@ class CadOracle final : public DomainOracle {
   /// What loading did (units, fuse, healing), one line per entry.
   const std::vector<std::string>& log() const;
 
- private:
-  struct RayHit {
-    double distance = 0;  ///< along the ray
-    int face = 0;         ///< index of the patch's face
+  /// The crossing of segment [a, b] with a face that is nearest to a, as the
+  /// intersector finds it (intersect() adds a bisection when it is tangent or
+  /// missing). `cosine` is between b - a and the face's normal, which points
+  /// out of the first solid (in file order) bounded by the face; `tangent` when
+  /// the crossing grazes the face or lies on the face's boundary.
+  struct Crossing {
     Point3 point;
-    double cosine = 0;     ///< between the face's outward normal and the ray
-    bool tangent = false;  ///< grazing, or on the face's boundary
+    PatchId patch;
+    double distance = 0;  ///< from a
+    double cosine = 0;
+    bool tangent = false;
   };
-  /// The first crossing of segment [a, a + d] with a face (per-thread intersectors).
-  std::optional<RayHit> first_hit(const Point3& a, const Point3& d) const;
-  /// The crossing with a planar face, analytically, if nearer than `best`.
-  void plane_hit(const cad::FacePatch& f, int index, const Point3& a, const Point3& d, double len,
-                 std::optional<RayHit>& best) const;
-  /// The crossing with a cylinder, cone, sphere or torus face, in closed form.
-  void quadric_hit(const cad::FacePatch& f, int index, const Point3& a, const Point3& d, double len,
-                   std::optional<RayHit>& best) const;
+  std::optional<Crossing> first_crossing(const Point3& a, const Point3& b) const;
 
+  /// The model's OpenCASCADE data (complete in cad/src only).
+  const Model& model() const { return *model_; }
+
+ private:
   std::unique_ptr<Model> model_;
   std::uint64_t serial_;  // identifies this oracle in the per-thread caches
 };

@@ -1,8 +1,10 @@
-// A bounding-volume hierarchy over the triangles of a mesh (private to the oracles).
+// A bounding-volume hierarchy over triangles (or any items given by their boxes),
+// shared by the oracle implementations (triangle meshes, CAD tessellations);
+// not part of the oracle interface.
 //
 // Nodes are stored depth-first in one array; a leaf holds up to kLeafSize
-// consecutive entries of `order()` (triangle indices). Built once by median
-// splits on the longest axis of the centroids' box; queries are const,
+// consecutive entries of `order()` (item indices). Built once by median
+// splits on the longest axis of the items' centre points; queries are const,
 // allocation-free (fixed traversal stack) and thread-safe.
 #pragma once
 
@@ -24,7 +26,11 @@ class TriangleBvh {
   static constexpr int kMaxDepth = 64;
 
   TriangleBvh() = default;
+  /// Over triangles of `points`, each bounded by its own box.
   TriangleBvh(const std::vector<Point3>& points, const std::vector<std::array<int, 3>>& triangles);
+  /// Over items given by their boxes (item i has box boxes[i], e.g. a triangle's box
+  /// inflated by how far the surface it stands for may deviate from it).
+  explicit TriangleBvh(const std::vector<Box3>& boxes);
 
   const std::vector<Node>& nodes() const { return nodes_; }
   const std::vector<int>& order() const { return order_; }
@@ -87,8 +93,9 @@ class TriangleBvh {
   }
 
  private:
+  void build_all(const std::vector<Box3>& boxes, const std::vector<Point3>& centres);
   int build(int begin, int end, int depth, const std::vector<Box3>& boxes,
-            const std::vector<Point3>& centroids);
+            const std::vector<Point3>& centres);
 
   std::vector<Node> nodes_;
   std::vector<int> order_;

@@ -1,5 +1,5 @@
-// The triangle BVH: construction and the small geometric helpers of its queries.
-#include "triangle_mesh_bvh.h"
+// The BVH of rdmesh/detail/triangle_bvh.h: construction and its small geometric helpers.
+#include "rdmesh/detail/triangle_bvh.h"
 
 #include <algorithm>
 #include <cmath>
@@ -30,13 +30,25 @@ TriangleBvh::TriangleBvh(const std::vector<Point3>& points,
   for (int t = 0; t < n; ++t) {
     boxes[t] = empty_box();
     for (int v : triangles[t]) grow(boxes[t], points[v]);
-    centroids[t] = (1.0 / 3) * (points[triangles[t][0]] + points[triangles[t][1]] +
-                                points[triangles[t][2]]);
+    centroids[t] =
+        (1.0 / 3) * (points[triangles[t][0]] + points[triangles[t][1]] + points[triangles[t][2]]);
   }
+  build_all(boxes, centroids);
+}
+
+TriangleBvh::TriangleBvh(const std::vector<Box3>& boxes) {
+  std::vector<Point3> centres(boxes.size());
+  for (std::size_t i = 0; i < boxes.size(); ++i) centres[i] = boxes[i].center();
+  build_all(boxes, centres);
+}
+
+void TriangleBvh::build_all(const std::vector<Box3>& boxes, const std::vector<Point3>& centres) {
+  const int n = static_cast<int>(boxes.size());
+  if (n == 0) return;
   order_.resize(n);
   for (int t = 0; t < n; ++t) order_[t] = t;
   nodes_.reserve(2 * (n / kLeafSize + 1));
-  build(0, n, 0, boxes, centroids);
+  build(0, n, 0, boxes, centres);
 }
 
 int TriangleBvh::build(int begin, int end, int depth, const std::vector<Box3>& boxes,

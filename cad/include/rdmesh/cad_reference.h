@@ -1,0 +1,55 @@
+// OpenCASCADE's own answers on a CadOracle's model, to check the oracle against
+// in tests and benchmarks. Slow, and independent of the oracle's tessellation
+// and Newton solvers: crossings come from IntCurvesFace_Intersector on every
+// face whose box the segment meets, distances from GeomAPI_ProjectPointOnSurf
+// and BRepExtrema.
+// Not thread-safe (one object per thread).
+#pragma once
+
+#include <memory>
+#include <optional>
+
+#include "rdmesh/cad_oracle.h"
+
+namespace rdmesh {
+
+class CadReference {
+ public:
+  explicit CadReference(const CadOracle& oracle);
+  ~CadReference();
+  CadReference(const CadReference&) = delete;
+  CadReference& operator=(const CadReference&) = delete;
+
+  /// The crossing of segment [a, b] with a face nearest to a (IN or ON the face;
+  /// `tangent` for a tangent transition or ON), same conventions as
+  /// CadOracle::first_crossing.
+  std::optional<CadOracle::Crossing> first_crossing(const Point3& a, const Point3& b);
+
+  /// The closest point of the (untrimmed) surface of `patch` to p.
+  struct Foot {
+    double distance = 0;   ///< from p; infinite when the projection fails
+    bool in_face = false;  ///< its (u, v) classifies IN or ON the face
+  };
+  Foot foot(const Point3& p, PatchId patch);
+
+  /// Distance from p to the trimmed face of `patch` (BRepExtrema_DistShapeShape);
+  /// infinite when it fails.
+  double distance_to_face(const Point3& p, PatchId patch);
+
+  /// The oracle's (u, v) classification (its cells) against the face's
+  /// BRepTopAdaptor_FClass2d, at `per_face` points of every face: half random
+  /// in the face's (u, v) box, half near its pcurves (offset by 1e-5..1e-2 of
+  /// the box). Points either side leaves undecided (the cells defer to the
+  /// classifier, or the classifier answers ON) are not compared.
+  struct CellCheck {
+    int compared = 0;
+    int disagree = 0;
+  };
+  CellCheck check_cells(int per_face, unsigned seed);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace rdmesh

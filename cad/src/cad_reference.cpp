@@ -1,0 +1,176 @@
+// OpenCASCADE reference answers (rdmesh/cad_reference.h).
+#include "rdmesh/cad_reference.h"
+
+#include <BRepAdaptor_Curve2d.hxx>
+#include <BRepBuilderAPI_MakeVertex.hxx>
+#include <BRepExtrema_DistShapeShape.hxx>
+#include <BRep_Tool.hxx>
+#include <GeomAPI_ProjectPointOnSurf.hxx>
+#include <IntCurvesFace_Intersector.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <gp_Lin.hxx>
+#include <gp_Pnt2d.hxx>
+#include <limits>
+#include <random>
+
+#include "cad_model.h"
+
+namespace rdmesh {
+
+struct CadReference::Impl {
+  const CadOracle::Model* model;
+  std::vector<std::unique_ptr<IntCurvesFace_Intersector>> intersectors;
+  std::vector<std::unique_ptr<BRepTopAdaptor_FClass2d>> classifiers;
+};
+
+namespace {
+
+// Whether segment [a, b] meets the box.
+bool meets(const Point3& a, const Point3& b, const Box3& box) {
+  double t0 = 0, t1 = 1;
+  const double o[3] = {a.x, a.y, a.z}, v[3] = {b.x - a.x, b.y - a.y, b.z - a.z};
+  const double lo[3] = {box.lo.x, box.lo.y, box.lo.z}, hi[3] = {box.hi.x, box.hi.y, box.hi.z};
+  for (int k = 0; k < 3; ++k) {
+    if (v[k] == 0) {
+      if (o[k] < lo[k] || o[k] > hi[k]) return false;
+      continue;
+    }
+    double ta = (lo[k] - o[k]) / v[k], tb = (hi[k] - o[k]) / v[k];
+    if (ta > tb) std::swap(ta, tb);
+    t0 = std::max(t0, ta);
+    t1 = std::min(t1, tb);
+    if (t0 > t1) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+CadReference::CadReference(const CadOracle& oracle) : impl_(std::make_unique<Impl>()) {
+  impl_->model = &oracle.model();
+  impl_->intersectors.resize(impl_->model->faces.size());
+  impl_->classifiers.resize(impl_->model->faces.size());
+}
+
+CadReference::~CadReference() = default;
+
+std::optional<CadOracle::Crossing> CadReference::first_crossing(const Point3& a, const Point3& b) {
+  const CadOracle::Model& m = *impl_->model;
+  const Point3 d = b - a;
+  const double len = norm(d);
+  if (!(len > 0)) return std::nullopt;
+  const gp_Lin line(gp_Pnt(a.x, a.y, a.z), gp_Dir(d.x, d.y, d.z));
+  std::optional<CadOracle::Crossing> best;
+  try {
+    for (std::size_t i = 0; i < m.faces.size(); ++i) {
+      const cad::FacePatch& f = m.faces[i];
+      if (!meets(a, b, f.box)) continue;
+      std::unique_ptr<IntCurvesFace_Intersector>& x = impl_->intersectors[i];
+      if (!x) x = std::make_unique<IntCurvesFace_Intersector>(f.face, 0.1 * m.tolerance);
+      try {
+        x->Perform(line, 0.0, len);
+      } catch (const Standard_Failure&) {
+        continue;
+      }
+      if (!x->IsDone()) continue;
+      for (int k = 1; k <= x->NbPnt(); ++k) {
+        const double w = x->WParameter(k);
+        if (w < 0 || w > len || (best && w >= best->distance)) continue;
+        gp_Pnt p;
+        gp_Vec du, dv;
+        f.surface->D1(x->UParameter(k), x->VParameter(k), p, du, dv);
+        gp_Vec n = du.Crossed(dv);
+        if (f.face.Orientation() == TopAbs_REVERSED) n.Reverse();
+        const double nn = n.Magnitude();
+        CadOracle::Crossing c;
+        c.point = {x->Pnt(k).X(), x->Pnt(k).Y(), x->Pnt(k).Z()};
+        c.patch = m.patches[i].id;
+        c.distance = w;
+        c.cosine = nn > 0 ? (n.X() * d.x + n.Y() * d.y + n.Z() * d.z) / (nn * len) : 0.0;
+        c.tangent = x->Transition(k) == IntCurveSurface_Tangent || x->State(k) == TopAbs_ON;
+        best = c;
+      }
+    }
+  } catch (const Standard_Failure& e) {
+    throw OracleError("OpenCASCADE failed in CadReference::first_crossing: " + cad::describe(e));
+  }
+  return best;
+}
+
+CadReference::Foot CadReference::foot(const Point3& p, PatchId patch) {
+  const CadOracle::Model& m = *impl_->model;
+  Foot out;
+  out.distance = std::numeric_limits<double>::infinity();
+  if (patch.value < 1 || patch.value > static_cast<int>(m.faces.size())) return out;
+  const cad::FacePatch& f = m.faces[patch.value - 1];
+  try {
+    GeomAPI_ProjectPointOnSurf proj(gp_Pnt(p.x, p.y, p.z), f.surface, f.u0, f.u1, f.v0, f.v1);
+    if (proj.NbPoints() == 0) return out;
+    double u, v;
+    proj.LowerDistanceParameters(u, v);
+    out.distance = proj.LowerDistance();
+    std::unique_ptr<BRepTopAdaptor_FClass2d>& c = impl_->classifiers[patch.value - 1];
+    if (!c) c = std::make_unique<BRepTopAdaptor_FClass2d>(f.face, BRep_Tool::Tolerance(f.face));
+    const TopAbs_State s = c->Perform(gp_Pnt2d(u, v));
+    out.in_face = s == TopAbs_IN || s == TopAbs_ON;
+  } catch (const Standard_Failure& e) {
+    throw OracleError("OpenCASCADE failed in CadReference::foot: " + cad::describe(e));
+  }
+  return out;
+}
+
+double CadReference::distance_to_face(const Point3& p, PatchId patch) {
+  const CadOracle::Model& m = *impl_->model;
+  if (patch.value < 1 || patch.value > static_cast<int>(m.faces.size())) {
+    return std::numeric_limits<double>::infinity();
+  }
+  try {
+    BRepExtrema_DistShapeShape dist(BRepBuilderAPI_MakeVertex(gp_Pnt(p.x, p.y, p.z)).Vertex(),
+                                    m.faces[patch.value - 1].face);
+    if (!dist.IsDone() || dist.NbSolution() == 0) return std::numeric_limits<double>::infinity();
+    return dist.Value();
+  } catch (const Standard_Failure& e) {
+    throw OracleError("OpenCASCADE failed in CadReference::distance_to_face: " + cad::describe(e));
+  }
+}
+
+CadReference::CellCheck CadReference::check_cells(int per_face, unsigned seed) {
+  const CadOracle::Model& m = *impl_->model;
+  CellCheck out;
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  try {
+    for (std::size_t i = 0; i < m.faces.size(); ++i) {
+      const cad::FacePatch& f = m.faces[i];
+      std::unique_ptr<BRepTopAdaptor_FClass2d>& c = impl_->classifiers[i];
+      if (!c) c = std::make_unique<BRepTopAdaptor_FClass2d>(f.face, BRep_Tool::Tolerance(f.face));
+      std::vector<BRepAdaptor_Curve2d> pcurves;
+      for (TopExp_Explorer ex(f.face, TopAbs_EDGE); ex.More(); ex.Next()) {
+        pcurves.emplace_back(TopoDS::Edge(ex.Current()), f.face);
+      }
+      const double du = f.u1 - f.u0, dv = f.v1 - f.v0;
+      for (int k = 0; k < per_face; ++k) {
+        double u = f.u0 + uniform(rng) * du, v = f.v0 + uniform(rng) * dv;
+        if (k % 2 && !pcurves.empty()) {  // near the boundary
+          const BRepAdaptor_Curve2d& pc = pcurves[static_cast<std::size_t>(k / 2) % pcurves.size()];
+          const gp_Pnt2d q = pc.Value(pc.FirstParameter() +
+                                      uniform(rng) * (pc.LastParameter() - pc.FirstParameter()));
+          const double r = std::pow(10.0, -5 + 3 * uniform(rng)), angle = 2 * M_PI * uniform(rng);
+          u = q.X() + r * du * std::cos(angle), v = q.Y() + r * dv * std::sin(angle);
+        }
+        const cad::UvState mine = f.cells.state_at(u, v);
+        if (mine == cad::UvState::boundary) continue;
+        const TopAbs_State theirs = c->Perform(gp_Pnt2d(u, v));
+        if (theirs != TopAbs_IN && theirs != TopAbs_OUT) continue;
+        ++out.compared;
+        out.disagree += (mine == cad::UvState::inside) != (theirs == TopAbs_IN);
+      }
+    }
+  } catch (const Standard_Failure& e) {
+    throw OracleError("OpenCASCADE failed in CadReference::check_cells: " + cad::describe(e));
+  }
+  return out;
+}
+
+}  // namespace rdmesh

@@ -1,0 +1,24 @@
+// Internal to cad/: the closest point of a face to a point (CadOracle::project).
+//
+// The nearest point of the face's tessellation seeds Newton on the true surface
+// (surface_evaluator.h). A foot inside the face (cells or classifier) is the
+// answer. A foot outside it means the closest point is on the face's boundary:
+// the nearest point of its edge polylines seeds Newton on the edge curves.
+// Without a usable seed or foot, GeomAPI_ProjectPointOnSurf searches the whole
+// surface; BRepExtrema is the last resort.
+#pragma once
+
+#include <optional>
+
+#include "cad_model.h"
+
+namespace rdmesh::cad {
+
+class ThreadState;
+
+/// The point of face `face` closest to p; nullopt when nothing converges.
+/// Throws Standard_Failure.
+std::optional<Point3> project_on_face(const CadOracle::Model& m, ThreadState& ts, int face,
+                                      const Point3& p);
+
+}  // namespace rdmesh::cad

@@ -1,0 +1,48 @@
+// Internal to cad/: a face's tessellation, used only to find where to look.
+//
+// The face's (u, v) box is cut by a kd-tree into cells (uv_cells.h): inside the
+// face, outside it (dropped) or crossed by its boundary. Cells are split at the
+// surface's C2 breaks, where the surface turns (normal spread) or bends (chord
+// sagitta), where they are large, and along the boundary. Every kept cell gives two flat
+// triangles with (u, v) at their nodes; each triangle carries a bound on how far
+// the surface over it strays from it (twice the largest deviation sampled at its
+// edge midpoints and centroid: the exact factor is 4/3 for a quadratic surface)
+// and a cone holding the surface normals over it (the widest sampled angle times
+// 1.5 plus 0.005 rad). Both are measured, not assumed, and both err on the large side.
+#pragma once
+
+#include <vector>
+
+#include "rdmesh/geometry.h"
+#include "uv_cells.h"
+
+namespace rdmesh::cad {
+
+struct FacePatch;
+class SurfaceEvaluator;
+
+/// A flat triangle standing for the surface S over a triangle of the (u, v) domain.
+struct SurfaceTriangle {
+  int face = 0;
+  double uv[3][2] = {};
+  Point3 p[3];           ///< S(uv[k])
+  Point3 n[3];           ///< unit surface normals (du x dv) at the nodes; zero where degenerate
+  Point3 axis;           ///< unit normal of the flat triangle (du x dv side)
+  double sin_cone = 1;   ///< every normal over the triangle is within asin(sin_cone) of axis
+  double deviation = 0;  ///< |S(u, v) - flat(u, v)| stays below this over the triangle
+  bool inside = false;   ///< the triangle's cell is an inside cell
+};
+
+/// Builds `f.cells` and appends the face's triangles to `out`. `size` is the
+/// model's diagonal (caps cell sizes).
+void tessellate_face(FacePatch& f, int face, const SurfaceEvaluator& surface, double size,
+                     std::vector<SurfaceTriangle>& out);
+
+/// The box of t's nodes widened by r on every side.
+Box3 triangle_box(const SurfaceTriangle& t, double r);
+
+/// Measures a triangle whose nodes (uv, p, n) are set: deviation, axis, cone.
+/// Evaluates the surface at the triangle's edge midpoints and centroid.
+void measure_triangle(const SurfaceEvaluator& surface, SurfaceTriangle& t);
+
+}  // namespace rdmesh::cad

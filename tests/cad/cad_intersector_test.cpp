@@ -1,0 +1,292 @@
+// The CAD oracle's own intersector (tessellation, Newton, closed forms) on the
+// shared STEP files, checked against OpenCASCADE's reference
+// (rdmesh/cad_reference.h): every crossing it returns lies on the segment and on
+// its face, and its nearest crossing is OpenCASCADE's on (nearly) every segment.
+// Skipped when the data directory is absent.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <random>
+#include <thread>
+#include <vector>
+
+#include "oracles/oracle_conformance.h"
+#include "rdmesh/cad_oracle.h"
+#include "rdmesh/cad_reference.h"
+
+namespace rdmesh {
+namespace {
+
+const std::filesystem::path kStep = "/work/shared/data/step";
+
+std::unique_ptr<CadOracle> load_shared(const char* file) {
+  const std::filesystem::path path = kStep / file;
+  if (!std::filesystem::exists(path)) return nullptr;
+  return load_cad_file(path.string());
+}
+
+/// `count` segments: a third between two random points of the box, the others
+/// short (1e-3..1e-1 of the diagonal) through points near the patches' initial
+/// points, as the duals of surface facets are, or near the curves (the faces'
+/// boundaries), where refinement spends most queries.
+std::vector<std::pair<Point3, Point3>> segments(const CadOracle& o, int count, unsigned seed) {
+  std::vector<Point3> surface, edges;
+  for (const PatchInfo& p : o.patches()) {
+    for (const Point3& x : o.initial_points(p.id)) surface.push_back(x);
+  }
+  for (const CurveInfo& c : o.curves()) {
+    for (int k = 0; k < 16; ++k) {
+      edges.push_back(o.curve(c.id).point(c.t_begin + (c.t_end - c.t_begin) * (k + 0.5) / 16));
+    }
+  }
+  const Box3 box = o.bounding_box();
+  const double diag = box.diagonal();
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::normal_distribution<double> g;
+  auto unit = [&] {
+    const Point3 v{g(rng), g(rng), g(rng)};
+    return (1 / norm(v)) * v;
+  };
+  auto in_box = [&] {
+    return Point3{box.lo.x + u(rng) * (box.hi.x - box.lo.x),
+                  box.lo.y + u(rng) * (box.hi.y - box.lo.y),
+                  box.lo.z + u(rng) * (box.hi.z - box.lo.z)};
+  };
+  std::vector<std::pair<Point3, Point3>> out;
+  for (int i = 0; i < count; ++i) {
+    const std::vector<Point3>& near = i % 3 == 1 ? surface : edges;
+    if (i % 3 == 0 || near.empty()) {
+      out.emplace_back(in_box(), in_box());
+      continue;
+    }
+    const double len = diag * std::pow(10.0, -1.0 - 2.0 * u(rng));
+    const Point3 x = near[static_cast<std::size_t>(u(rng) * near.size()) % near.size()];
+    const Point3 c = x + (0.2 * len * u(rng)) * unit(), h = (0.5 * len) * unit();
+    out.emplace_back(c - h, c + h);
+  }
+  return out;
+}
+
+class SharedStep : public ::testing::TestWithParam<const char*> {};
+
+// The nearest crossing on each segment, against OpenCASCADE's. Categories:
+// same face and point (within 10 tolerances); same point on an adjacent face
+// (a segment through an edge); OpenCASCADE reports an ON-boundary crossing
+// the oracle does not (a segment grazing an edge: IntCurvesFace_Intersector's
+// ON band reaches 1e-3 mm outside these faces, beyond the model tolerance);
+// missed (OpenCASCADE's nearer crossing is transversal and on its face);
+// missed by OpenCASCADE (the oracle's nearer crossing is on its face); and
+// anything else. Measured on these 1500 segments per file: same face and point
+// 98.6..99.8%, adjacent face <= 8, OpenCASCADE's ON only <= 13, missed 0,
+// missed by OpenCASCADE <= 4, anything else 0.
+TEST_P(SharedStep, NearestCrossingMatchesOpenCascade) {
+  const auto oracle = load_shared(GetParam());
+  if (!oracle) GTEST_SKIP() << kStep << " is absent";
+  CadReference ref(*oracle);
+  const double tol = oracle->tolerance();
+  const auto on_its_face = [&](const CadOracle::Crossing& c) {
+    const CadReference::Foot f = ref.foot(c.point, c.patch);
+    return f.distance <= tol && (f.in_face || ref.distance_to_face(c.point, c.patch) <= tol);
+  };
+  const auto list = segments(*oracle, 1500, 7);
+  int same = 0, edge = 0, loose = 0, missed = 0, they_missed = 0, other = 0, crossings = 0;
+  for (const auto& [a, b] : list) {
+    const auto mine = oracle->first_crossing(a, b);
+    const auto theirs = ref.first_crossing(a, b);
+    if (mine) {
+      ++crossings;
+      const Point3 d = (1 / distance(a, b)) * (b - a);
+      const double t = dot(mine->point - a, d);
+      EXPECT_LE(distance(mine->point, a + t * d), tol) << "crossing off the segment";
+      EXPECT_GE(t, -tol);
+      EXPECT_LE(t, distance(a, b) + tol);
+      EXPECT_TRUE(on_its_face(*mine)) << "crossing off patch " << mine->patch.value;
+    }
+    const bool nearer = theirs && (!mine || theirs->distance < mine->distance);
+    if ((!mine && !theirs) || (mine && theirs && mine->patch == theirs->patch &&
+                               distance(mine->point, theirs->point) <= 10 * tol)) {
+      ++same;
+    } else if (mine && theirs && distance(mine->point, theirs->point) <= 10 * tol) {
+      ++edge;
+    } else if (nearer && theirs->tangent) {
+      ++loose;  // a segment grazing an edge, within OpenCASCADE's ON band
+    } else if (nearer && !theirs->tangent && on_its_face(*theirs)) {
+      ++missed;
+    } else if (mine && !nearer && on_its_face(*mine)) {
+      ++they_missed;  // the oracle's crossing is nearer and valid
+    } else {
+      ++other;
+    }
+  }
+  std::printf(
+      "%s: %zu segments, %d crossings: same %d, adjacent face %d, OpenCASCADE's ON only %d, "
+      "missed %d, missed by OpenCASCADE %d, other %d\n",
+      GetParam(), list.size(), crossings, same, edge, loose, missed, they_missed, other);
+  EXPECT_GE(same, 0.98 * list.size());
+  EXPECT_EQ(missed, 0);
+  EXPECT_LE(other, 1);
+  EXPECT_GT(crossings, static_cast<int>(list.size()) / 2);
+}
+
+// locate() agrees with intersect(), hits separate their patch's sides, project()
+// lands on the patch (the shared suite, without its curve checks).
+TEST_P(SharedStep, PassesOracleConformanceOfSurfaces) {
+  const auto oracle = load_shared(GetParam());
+  if (!oracle) GTEST_SKIP() << kStep << " is absent";
+  expect_oracle_conformance(*oracle, 400, 3, false);
+}
+
+// All B-spline (t20, wrenchnut: two solids), a periodic B-spline side
+// (periodic_u_cst), helical B-splines with cones (drill), tori and cones (screw).
+INSTANTIATE_TEST_SUITE_P(Files, SharedStep,
+                         ::testing::Values("gmsh_t20_data_component8.step", "gmsh_wrenchnut.stp",
+                                           "gmsh_periodic_u_cst.step", "occtsample_drill.step",
+                                           "occt_screw.step"),
+                         [](const auto& info) {
+                           std::string n = info.param;
+                           n = n.substr(0, n.find('.'));
+                           for (char& ch : n) ch = std::isalnum((unsigned char)ch) ? ch : '_';
+                           return n;
+                         });
+
+// The cells' inside/outside answers are the face classifier's, also next to
+// the boundary, on planes, cylinders, cones, spheres, tori and B-splines; on
+// pcurves with narrow excursions (Solid_56: edges of tolerance 4e-3 whose
+// pcurves dip 0.1 into the face between sparse samples) and on a face whose
+// (u, v) box spans two periods (the bottle's thread).
+TEST(CadCells, ClassifyLikeTheFaceClassifier) {
+  for (const char* file :
+       {"gmsh_t20_data_component8.step", "gmsh_periodic_u_cst.step", "occtsample_drill.step",
+        "gmsh_Zylkopf.stp", "nist_stc_06_asme1_ap242-e3.stp", "gmsh_Solid_56.step",
+        "../brep/occt_bottle.brep"}) {
+    const auto oracle = load_shared(file);
+    if (!oracle) GTEST_SKIP() << kStep << " is absent";
+    CadReference ref(*oracle);
+    const CadReference::CellCheck c = ref.check_cells(200, 3);
+    std::printf("%s: %d points compared, %d disagree\n", file, c.compared, c.disagree);
+    EXPECT_EQ(c.disagree, 0) << file;
+    EXPECT_GT(c.compared, 100 * static_cast<int>(oracle->patches().size())) << file;
+  }
+}
+
+// Projections of points near the surface land on their face, as close as the
+// face's closest point found by BRepExtrema.
+TEST(CadProject, LandsOnTheFaceAtTheClosestPoint) {
+  const auto oracle = load_shared("gmsh_wrenchnut.stp");
+  if (!oracle) GTEST_SKIP() << kStep << " is absent";
+  CadReference ref(*oracle);
+  const double tol = oracle->tolerance(), diag = oracle->bounding_box().diagonal();
+  std::mt19937 rng(5);
+  std::normal_distribution<double> g;
+  int checked = 0;
+  for (const PatchInfo& patch : oracle->patches()) {
+    const std::vector<Point3> seeds = oracle->initial_points(patch.id);
+    for (std::size_t i = 0; i < seeds.size(); i += 4) {
+      const Point3 v{g(rng), g(rng), g(rng)};
+      const Point3 p = seeds[i] + (0.01 * diag / norm(v)) * v;
+      const std::optional<Point3> q = oracle->project(p, patch.id);
+      ASSERT_TRUE(q.has_value());
+      EXPECT_LE(ref.distance_to_face(*q, patch.id), tol) << "projection off " << patch.name;
+      EXPECT_LE(distance(p, *q), ref.distance_to_face(p, patch.id) + tol)
+          << "projection farther than the closest point of " << patch.name;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 100);
+}
+
+// Every answer is a function of the query alone: the same segments asked in
+// reverse order (other span caches and scratch state left behind) and of a
+// second oracle loaded from the same file give the same bits. (Newton guesses
+// often start on knots, where a cached B-spline span and a freshly located one
+// disagree in the last bits.)
+TEST(CadIntersector, AnswersDoNotDependOnQueryHistory) {
+  for (const char* file : {"gmsh_wrenchnut.stp", "gmsh_t20_data_component8.step",
+                           "occtsample_drill.step", "gmsh_periodic_u_cst.step"}) {
+    const auto oracle = load_shared(file);
+    if (!oracle) GTEST_SKIP() << kStep << " is absent";
+    const auto again = load_shared(file);
+    const auto list = segments(*oracle, 1500, 13);
+    auto answer = [&](const CadOracle& o, std::size_t i) {
+      const auto [a, b] = list[i];
+      const auto c = o.first_crossing(a, b);
+      const auto q = o.project(a, PatchId(1 + static_cast<int>(i % o.patches().size())));
+      return std::array<double, 6>{c ? c->point.x : 0,
+                                   c ? c->point.y : 0,
+                                   c ? c->point.z : 0,
+                                   c ? c->distance : -1,
+                                   q ? q->x + 2 * q->y + 3 * q->z : 0,
+                                   static_cast<double>(o.locate(b).value)};
+    };
+    std::vector<std::array<double, 6>> forward(list.size()), backward(list.size()),
+        other(list.size());
+    for (std::size_t i = 0; i < list.size(); ++i) forward[i] = answer(*oracle, i);
+    for (std::size_t i = list.size(); i-- > 0;) backward[i] = answer(*oracle, i);
+    for (std::size_t i = 0; i < list.size(); i += 2) other[i] = answer(*again, i);
+    int differ = 0;
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      differ += forward[i] != backward[i] || (i % 2 == 0 && forward[i] != other[i]);
+    }
+    EXPECT_EQ(differ, 0) << file;
+  }
+}
+
+// A Voronoi ray may reach 1e20 (the core clips rays only roughly): the oracle
+// answers on the part of the segment in the model box, so a far end gives the
+// crossing of the part up to the box. (Along a 2.8e20-long ray coordinates near
+// the box had no digits left: wrenchnut's refinement ran away to 210k vertices.)
+TEST(CadIntersector, FarEndsGiveTheCrossingsOfThePartInTheBox) {
+  const auto oracle = load_shared("gmsh_wrenchnut.stp");
+  if (!oracle) GTEST_SKIP() << kStep << " is absent";
+  const double tol = oracle->tolerance();
+  const Box3 box = oracle->bounding_box();
+  auto same = [&](const std::optional<SurfaceHit>& x, const std::optional<SurfaceHit>& y) {
+    return (!x && !y) || (x && y && x->patch == y->patch && distance(x->point, y->point) <= tol);
+  };
+  int compared = 0, differ = 0;
+  for (const auto& [p, q] : segments(*oracle, 600, 17)) {
+    if (!box.contains(p) || !box.contains(q)) continue;
+    const Point3 dir = (1 / distance(p, q)) * (p - q);
+    double exit = HUGE_VAL;  // where q + t dir leaves the box
+    const double o[3] = {q.x, q.y, q.z}, v[3] = {dir.x, dir.y, dir.z};
+    const double lo[3] = {box.lo.x, box.lo.y, box.lo.z}, hi[3] = {box.hi.x, box.hi.y, box.hi.z};
+    for (int k = 0; k < 3; ++k) {
+      if (v[k] != 0) exit = std::min(exit, ((v[k] > 0 ? hi[k] : lo[k]) - o[k]) / v[k]);
+    }
+    const Point3 e = q + exit * dir, far = q + 1e20 * dir;
+    ++compared;
+    differ += !same(oracle->intersect(q, far), oracle->intersect(q, e));
+    differ += !same(oracle->intersect(far, q), oracle->intersect(e, q));
+  }
+  EXPECT_GT(compared, 150);
+  EXPECT_EQ(differ, 0);
+}
+
+// Threads with their own OpenCASCADE state give the serial answers on B-splines.
+TEST(CadIntersector, ConcurrentCrossingsMatchSerialOnes) {
+  const auto oracle = load_shared("gmsh_wrenchnut.stp");
+  if (!oracle) GTEST_SKIP() << kStep << " is absent";
+  const auto list = segments(*oracle, 600, 11);
+  auto answers = [&] {
+    std::vector<double> out;
+    for (const auto& [a, b] : list) {
+      const auto c = oracle->first_crossing(a, b);
+      out.push_back(c ? c->distance + 1000 * c->patch.value : -1.0);
+      out.push_back(oracle->locate(a).value);
+    }
+    return out;
+  };
+  const std::vector<double> serial = answers();
+  std::vector<std::vector<double>> results(3);
+  std::vector<std::thread> threads;
+  for (auto& r : results) threads.emplace_back([&r, &answers] { r = answers(); });
+  for (auto& t : threads) t.join();
+  for (const auto& r : results) EXPECT_EQ(r, serial);
+}
+
+}  // namespace
+}  // namespace rdmesh
