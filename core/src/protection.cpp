@@ -75,16 +75,15 @@ double ProtectionPlanner::step_at(const CurveData& d, double a) const {
     const double t = d.c.curve->parameter_at_length(d.c.info.t_begin, std::min(x, d.length));
     return 2 * criteria_.edge_size(d.c.curve->point(t));
   };
-  // The step from a must respect the size all along [a, a + s], its far end
-  // included (the next sample's own cap): s = min over that window, found by
-  // a few decreasing fixed-point iterations.
-  // The corner balls at the ends act as caps: sizes grow from them gradually
-  // (a first sample much larger than its corner's ball would swallow it).
+  // The step s from a must respect every constraint seen from its window
+  // [a, a + s], its far end included (the next sample's own cap). The corner
+  // balls at the ends act as caps: sizes grow from them gradually (a first
+  // sample much larger than its corner's ball would swallow it).
   const double cap_start = d.start >= 0 ? corner_radius_[d.start] / kRadiusRatio : HUGE_VAL;
   const double cap_end = d.end >= 0 ? corner_radius_[d.end] / kRadiusRatio : HUGE_VAL;
-  double s = size_at(a);
-  for (int it = 0; it < 4; ++it) {
-    double m = std::min(size_at(a), size_at(a + s));
+  const double size_here = size_at(a);
+  auto limit = [&](double s) {
+    double m = std::min(size_here, size_at(a + s));
     m = std::min(m, cap_start + kGrowth * a);
     m = std::min(m, cap_end + kGrowth * std::max(0.0, d.length - a - s));
     for (const Cap& cap : d.caps) {
@@ -96,10 +95,21 @@ double ProtectionPlanner::step_at(const CurveData& d, double a) const {
       }
       m = std::min(m, cap.value + kGrowth * gap);
     }
-    if (m >= s) break;
-    s = m;
+    return m;
+  };
+  // limit() does not grow with s (a longer window sees more of every cap), so
+  // the steps it allows form an interval [0, s*]: find s* by bisection. (Taking
+  // the limit of the longest window as the step would stop far below s* when
+  // that window reaches a small cap that the step itself never gets near.)
+  double lo = 0, hi = size_here;
+  if (limit(hi) < hi) {
+    for (int it = 0; it < 40 && hi - lo > 1e-6 * hi; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      (mid <= limit(mid) ? lo : hi) = mid;
+    }
+    hi = lo;
   }
-  return std::max(s, 2 * min_size_);
+  return std::max(hi, 2 * min_size_);
 }
 
 double ProtectionPlanner::exit_arc(const CurveData& d, const Point3& q, double r,
@@ -145,10 +155,11 @@ void ProtectionPlanner::sample_curve(CurveData& d) {
     const double mid = std::clamp(0.5 * (a0 + a1), 0.0, d.length);
     d.samples.push_back(sample(mid, kRadiusRatio * std::min(step0, step_at(d, mid))));
   } else {
-    // March with the local step; the last (up to three) steps share what is
-    // left to a1 equally, so that the last sample lands exactly there while
-    // every other sample keeps the position its caps were measured at (a
-    // uniform rescaling would shift a long curve's far samples away from them).
+    // March with the local step until a1 is passed, then shorten the last
+    // steps in proportion so that the last sample lands exactly on a1. Steps
+    // only ever shrink (a longer step could exceed the cap it was measured
+    // against), and every other sample keeps the position its caps were
+    // measured at (a uniform rescaling would shift a long curve's far samples).
     std::vector<double> arcs{a0}, steps;
     while (arcs.back() < a1) {
       // Shortened so that the jittered chords below stay within the step.
@@ -161,12 +172,18 @@ void ProtectionPlanner::sample_curve(CurveData& d) {
       arcs.assign(1, a0);
       for (double s : steps) arcs.push_back(arcs.back() + s);
     }
-    const std::size_t n = steps.size(), m = std::min<std::size_t>(n, 3);
-    const double from = arcs[n - m], share = (a1 - from) / static_cast<double>(m);
-    for (std::size_t k = n - m + 1; k <= n; ++k) {
-      arcs[k] = from + share * static_cast<double>(k - (n - m));
-      steps[k - 1] = share;
+    const std::size_t n = steps.size();
+    // As few trailing steps as keep each at >= 3/4 of its length (all if need be).
+    const double overshoot = arcs[n] - a1;
+    std::size_t m = 1;
+    double tail = steps[n - 1];
+    while (m < n && overshoot > 0.25 * tail) tail += steps[n - ++m];
+    const double shrink = (tail - overshoot) / tail;
+    for (std::size_t k = n - m; k < n; ++k) {
+      steps[k] *= shrink;
+      arcs[k + 1] = arcs[k] + steps[k];
     }
+    arcs[n] = a1;
     for (std::size_t k = 0; k <= n; ++k) {
       if (info.closed && k == n) break;  // the first sample again, added below
       double s = k < n ? steps[k] : steps[n - 1];
@@ -207,7 +224,7 @@ bool ProtectionPlanner::shrink_ball(const BallRef& b, double factor) {
   const double value = std::max(factor * s.radius / kRadiusRatio, 2 * min_size_);
   double now = HUGE_VAL;
   for (const Cap& cap : d.caps) now = std::min(now, cap.value + kGrowth * std::fabs(cap.arc - s.arc));
-  if (value >= 0.999 * std::min(now, step_at(d, s.arc))) return false;
+  if (value >= 0.999 * std::min(now, s.radius / kRadiusRatio)) return false;
   d.dirty = true;
   d.caps.push_back({s.arc, value});
   return true;

@@ -153,6 +153,41 @@ TEST(Protection, TangentCurvesMeetingAtACorner) {
   EXPECT_LT(plan.curves[0].samples[1].radius, 0.25 * 0.2);
 }
 
+TEST(Protection, ASmallBallFarAheadDoesNotShrinkTheStepsBeforeIt) {
+  // A 10-long segment with a tick 0.05 above it at x = 9: the balls there are
+  // tiny, and sizes grow back from them at kGrowth. With an edge size of 2 a
+  // step's window is 4 long, so it reaches x = 9 from x = 5: the steps must
+  // still be the largest whose own window respects the tick's cap, not that
+  // cap itself (which would sample [5, 9] with tiny balls).
+  ParametricCurve line([](double t) { return Point3{t, 0, 0}; }, 0, 10);
+  ParametricCurve tick([](double t) { return Point3{9, t, 0}; }, 0.05, 2);
+  Layout l;
+  l.corners = {{CornerId(1), {0, 0, 0}, {CurveId(1)}, {}},
+               {CornerId(2), {10, 0, 0}, {CurveId(1)}, {}},
+               {CornerId(3), {9, 0.05, 0}, {CurveId(2)}, {}},
+               {CornerId(4), {9, 2, 0}, {CurveId(2)}, {}}};
+  l.curves = {{CurveInfo{CurveId(1), "line", false, 0, 10, CornerId(1), CornerId(2), {}}, &line},
+              {CurveInfo{CurveId(2), "tick", false, 0.05, 2, CornerId(3), CornerId(4), {}}, &tick}};
+  const Criteria c = test::uniform_criteria(2.0);
+  const ProtectionPlan plan = plan_for(l, c, 1e-4);
+  expect_protected(l, plan, c);
+  const std::vector<BallSample>& s = plan.curves[0].samples;
+  double smallest = HUGE_VAL;
+  for (const BallSample& b : s) smallest = std::min(smallest, b.radius);
+  ASSERT_LT(smallest, 0.05) << "the balls next to the tick are small";
+  // From every ball the sizes grow back at kGrowth: a ball at distance g from
+  // the smallest one is at least kRadiusRatio * kGrowth * g / 2 (the 2 allows
+  // for the jitter and for landing on the end corner).
+  const double x_small = std::min_element(s.begin(), s.end(), [](const auto& a, const auto& b) {
+                           return a.radius < b.radius;
+                         })->point.x;
+  for (const BallSample& b : s) {
+    const double g = std::fabs(b.point.x - x_small);
+    EXPECT_GE(b.radius, 0.5 * Planner::kRadiusRatio * Planner::kGrowth * g) << "ball at x = " << b.point.x;
+  }
+  EXPECT_LT(s.size(), 40u);
+}
+
 TEST(Protection, ShrinkMakesTheBallsAroundASampleSmaller) {
   const LoadedDomain d =
       load_domain_file(std::string(RDMESH_SOURCE_DIR) + "/samples/capped_cylinder.json");
