@@ -82,34 +82,35 @@ double ProtectionPlanner::step_at(const CurveData& d, double a) const {
   const double cap_start = d.start >= 0 ? corner_radius_[d.start] / kRadiusRatio : HUGE_VAL;
   const double cap_end = d.end >= 0 ? corner_radius_[d.end] / kRadiusRatio : HUGE_VAL;
   const double size_here = size_at(a);
-  auto limit = [&](double s) {
-    double m = std::min(size_here, size_at(a + s));
-    m = std::min(m, cap_start + kGrowth * a);
-    m = std::min(m, cap_end + kGrowth * std::max(0.0, d.length - a - s));
-    for (const Cap& cap : d.caps) {
-      double gap = cap.arc < a ? a - cap.arc : (cap.arc > a + s ? cap.arc - a - s : 0.0);
-      if (d.c.info.closed) {
-        const double wrapped = std::min(std::fabs(cap.arc + d.length - a),
-                                        std::fabs(cap.arc - d.length - a));
-        gap = std::min(gap, std::max(0.0, wrapped - s));
-      }
-      m = std::min(m, cap.value + kGrowth * gap);
-    }
-    return m;
+  // A cap (value v) `ahead` of a allows the steps s with s <= v + kGrowth * gap,
+  // gap = max(0, ahead - s) the part of the way to it the window leaves out:
+  // an interval [0, s*] with s* = v when the window may reach it (v > ahead),
+  // else the s at which the step meets the grown cap.
+  auto allowed = [](double v, double ahead) {
+    return v > ahead ? v : (v + kGrowth * ahead) / (1 + kGrowth);
   };
-  // limit() does not grow with s (a longer window sees more of every cap), so
-  // the steps it allows form an interval [0, s*]: find s* by bisection. (Taking
-  // the limit of the longest window as the step would stop far below s* when
-  // that window reaches a small cap that the step itself never gets near.)
-  double lo = 0, hi = size_here;
-  if (limit(hi) < hi) {
-    for (int it = 0; it < 40 && hi - lo > 1e-6 * hi; ++it) {
-      const double mid = 0.5 * (lo + hi);
-      (mid <= limit(mid) ? lo : hi) = mid;
+  double s = std::min(size_here, cap_start + kGrowth * a);
+  if (d.end >= 0) s = std::min(s, allowed(cap_end, std::max(0.0, d.length - a)));
+  for (const Cap& cap : d.caps) {
+    s = std::min(s, cap.arc < a ? cap.value + kGrowth * (a - cap.arc) : allowed(cap.value, cap.arc - a));
+    if (d.c.info.closed) {  // the cap seen around the curve's closing point
+      const double wrapped = std::min(std::fabs(cap.arc + d.length - a), std::fabs(cap.arc - d.length - a));
+      s = std::min(s, allowed(cap.value, wrapped));
     }
-    hi = lo;
   }
-  return std::max(hi, 2 * min_size_);
+  if (!criteria_.edge_size.is_uniform()) {
+    // The size at the window's far end depends on s in no monotone way: the
+    // largest s (at most the caps' s*) that it allows, by bisection.
+    double lo = 0, hi = s;
+    if (size_at(a + hi) < hi) {
+      for (int it = 0; it < 40 && hi - lo > 1e-6 * hi; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        (mid <= size_at(a + mid) ? lo : hi) = mid;
+      }
+      s = lo;
+    }
+  }
+  return std::max(s, 2 * min_size_);
 }
 
 double ProtectionPlanner::exit_arc(const CurveData& d, const Point3& q, double r,
