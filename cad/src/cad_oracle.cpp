@@ -23,23 +23,39 @@ using cad::describe;
 std::atomic<std::uint64_t> next_serial{1};
 
 // Entry parameter of ray a + t d (t in [0, 1]) into the box, or -1 when it misses.
-double box_entry(const Point3& a, const Point3& d, const Box3& box) {
-  double t0 = 0, t1 = 1;
-  const double o[3] = {a.x, a.y, a.z}, v[3] = {d.x, d.y, d.z};
-  const double lo[3] = {box.lo.x, box.lo.y, box.lo.z}, hi[3] = {box.hi.x, box.hi.y, box.hi.z};
-  for (int k = 0; k < 3; ++k) {
-    if (v[k] == 0) {
-      if (o[k] < lo[k] || o[k] > hi[k]) return -1;
-      continue;
+// Where segment a + t d, t in [0, 1], enters a box: its t, or -1 when it
+// misses the box. The reciprocal of d is computed once per segment, since one
+// segment meets many boxes of the candidate tree.
+class BoxEntry {
+ public:
+  BoxEntry(const Point3& a, const Point3& d) : o_{a.x, a.y, a.z} {
+    const double v[3] = {d.x, d.y, d.z};
+    for (int k = 0; k < 3; ++k) {
+      inv_[k] = 1.0 / v[k];
+      flat_[k] = !std::isfinite(inv_[k]);  // no extent along k (or too little to invert)
     }
-    double ta = (lo[k] - o[k]) / v[k], tb = (hi[k] - o[k]) / v[k];
-    if (ta > tb) std::swap(ta, tb);
-    t0 = std::max(t0, ta);
-    t1 = std::min(t1, tb);
-    if (t0 > t1) return -1;
   }
-  return t0;
-}
+  double operator()(const Box3& box) const {
+    double t0 = 0, t1 = 1;
+    const double lo[3] = {box.lo.x, box.lo.y, box.lo.z}, hi[3] = {box.hi.x, box.hi.y, box.hi.z};
+    for (int k = 0; k < 3; ++k) {
+      if (flat_[k]) {
+        if (o_[k] < lo[k] || o_[k] > hi[k]) return -1;
+        continue;
+      }
+      double ta = (lo[k] - o_[k]) * inv_[k], tb = (hi[k] - o_[k]) * inv_[k];
+      if (ta > tb) std::swap(ta, tb);
+      t0 = std::max(t0, ta);
+      t1 = std::min(t1, tb);
+      if (t0 > t1) return -1;
+    }
+    return t0;
+  }
+
+ private:
+  double o_[3], inv_[3];
+  bool flat_[3];
+};
 
 // Ray directions for locate(): generic (no axis or diagonal alignment).
 constexpr Point3 kRays[3] = {{0.8017837257372732, 0.5345224838248488, 0.2672612419124244},
@@ -94,9 +110,10 @@ std::optional<cad::RayHit> first_hit(const CadOracle::Model& m, std::uint64_t se
   if (!(len > 0)) return std::nullopt;
   cad::RayQuery query(m, cad::thread_state(m, serial), c->a, (1 / len) * d, len);
   double bound = query.reach();
+  const BoxEntry entry(c->a, d);
   m.candidate_tree.nearest(
       [&](const Box3& box) {
-        const double t = box_entry(c->a, d, box);
+        const double t = entry(box);
         return t < 0 ? std::numeric_limits<double>::infinity() : t * len;
       },
       [&](int t, double& reach) {

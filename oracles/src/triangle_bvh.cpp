@@ -82,25 +82,39 @@ int TriangleBvh::build(int begin, int end, int depth, const std::vector<Box3>& b
   return index;
 }
 
-bool segment_meets_box(const Point3& a, const Point3& b, const Box3& box) {
-  double t0 = 0, t1 = 1;
-  const double lo[3] = {box.lo.x, box.lo.y, box.lo.z}, hi[3] = {box.hi.x, box.hi.y, box.hi.z};
+SegmentBoxTest::SegmentBoxTest(const Point3& a, const Point3& b) {
   const double pa[3] = {a.x, a.y, a.z}, pb[3] = {b.x, b.y, b.z};
   for (int k = 0; k < 3; ++k) {
     const double d = pb[k] - pa[k];
+    a_[k] = pa[k];
+    inv_[k] = 1.0 / d;
+    flat_[k] = !std::isfinite(inv_[k]);  // d = 0, or so small that its reciprocal overflows
+    if (flat_[k]) inv_[k] = 0.0;
+  }
+}
+
+bool SegmentBoxTest::operator()(const Box3& box) const {
+  double t0 = 0, t1 = 1;
+  const double lo[3] = {box.lo.x, box.lo.y, box.lo.z}, hi[3] = {box.hi.x, box.hi.y, box.hi.z};
+  for (int k = 0; k < 3; ++k) {
+    // The margin also covers the rounding of the reciprocal (a few ulps).
     const double margin = 1e-12 * (std::abs(lo[k]) + std::abs(hi[k]) + (hi[k] - lo[k]));
     const double l = lo[k] - margin, h = hi[k] + margin;
-    if (d == 0) {
-      if (pa[k] < l || pa[k] > h) return false;
+    if (flat_[k]) {
+      if (a_[k] < l || a_[k] > h) return false;
       continue;
     }
-    double ta = (l - pa[k]) / d, tb = (h - pa[k]) / d;
+    double ta = (l - a_[k]) * inv_[k], tb = (h - a_[k]) * inv_[k];
     if (ta > tb) std::swap(ta, tb);
     t0 = std::max(t0, ta);
     t1 = std::min(t1, tb);
     if (t0 > t1 * (1 + 1e-12) + 1e-300) return false;
   }
   return true;
+}
+
+bool segment_meets_box(const Point3& a, const Point3& b, const Box3& box) {
+  return SegmentBoxTest(a, b)(box);
 }
 
 Point3 closest_on_triangle(const Point3& x, const Point3& p, const Point3& q, const Point3& r) {

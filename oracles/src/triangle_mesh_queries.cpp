@@ -63,7 +63,8 @@ bool TriangleMeshOracle::ray_parity(const Point3& p, int dir, int skip, bool for
   const double length = ((dir & 1) ? pa - lo : hi - pa) + 0.01 * box_.diagonal();
   const Point3 q = p + std::max(length, 0.0) * d;
   bool degenerate = false;
-  bvh_->traverse([&](const Box3& b) { return segment_meets_box(p, q, b); },
+  const SegmentBoxTest meets(p, q);
+  bvh_->traverse([&](const Box3& b) { return meets(b); },
                  [&](int t) {
                    const int c = triangle_component_[t];
                    if (c == skip) return true;
@@ -102,7 +103,8 @@ SubdomainId TriangleMeshOracle::locate(const Point3& p) const {
 std::optional<SurfaceHit> TriangleMeshOracle::intersect(const Point3& a, const Point3& b) const {
   double best_t = 2;
   int best = -1;
-  bvh_->traverse([&](const Box3& box) { return segment_meets_box(a, b, box); },
+  const SegmentBoxTest meets(a, b);
+  bvh_->traverse([&](const Box3& box) { return meets(box); },
                  [&](int t) {
                    const auto& tri = mesh_.triangles[t];
                    const Point3 &p = mesh_.points[tri[0]], &q = mesh_.points[tri[1]],

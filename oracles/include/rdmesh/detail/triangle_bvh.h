@@ -115,7 +115,20 @@ inline double squared_distance(const Box3& b, const Point3& p) {
   return dx * dx + dy * dy + dz * dz;
 }
 
-/// Whether segment [a, b] meets box `box` (slab test, with a relative margin).
+/// Whether segment [a, b] meets a box (slab test, with a relative margin). One
+/// segment is tested against many boxes in a tree walk: the reciprocal of its
+/// direction is computed once, so each box costs multiplications only.
+class SegmentBoxTest {
+ public:
+  SegmentBoxTest(const Point3& a, const Point3& b);
+  bool operator()(const Box3& box) const;
+
+ private:
+  double a_[3], inv_[3];
+  bool flat_[3];  ///< no extent along that axis: a point test there
+};
+
+/// SegmentBoxTest(a, b)(box), for a single box.
 bool segment_meets_box(const Point3& a, const Point3& b, const Box3& box);
 
 /// The point of triangle (p, q, r) closest to x.
