@@ -10,10 +10,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <random>
-#include <thread>
 #include <vector>
 
 #include "oracles/oracle_conformance.h"
+#include "same_answers_on_threads.h"
 #include "rdmesh/cad_oracle.h"
 #include "rdmesh/cad_reference.h"
 
@@ -280,12 +280,7 @@ TEST(CadIntersector, ConcurrentCrossingsMatchSerialOnes) {
     }
     return out;
   };
-  const std::vector<double> serial = answers();
-  std::vector<std::vector<double>> results(3);
-  std::vector<std::thread> threads;
-  for (auto& r : results) threads.emplace_back([&r, &answers] { r = answers(); });
-  for (auto& t : threads) t.join();
-  for (const auto& r : results) EXPECT_EQ(r, serial);
+  test::expect_same_answers_on_threads(answers, 3);
 }
 
 }  // namespace

@@ -5,10 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <thread>
 #include <vector>
 
 #include "oracles/oracle_conformance.h"
+#include "same_answers_on_threads.h"
 #include "rdmesh/errors.h"
 
 namespace rdmesh {
@@ -89,12 +89,7 @@ TEST(CadOracle, ConcurrentQueriesMatchSerialOnes) {
     }
     return out;
   };
-  const std::vector<double> serial = answers();
-  std::vector<std::vector<double>> results(4);
-  std::vector<std::thread> threads;
-  for (auto& r : results) threads.emplace_back([&r, &answers] { r = answers(); });
-  for (auto& t : threads) t.join();
-  for (const auto& r : results) EXPECT_EQ(r, serial);
+  test::expect_same_answers_on_threads(answers, 4);
 }
 
 }  // namespace
