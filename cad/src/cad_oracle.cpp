@@ -81,18 +81,7 @@ std::optional<Clipped> clip_to_box(const Box3& box, const Point3& a, const Point
   const bool from_a = squared_distance(box, a) <= squared_distance(box, b);
   const Point3 o = from_a ? a : b, dir = (from_a ? 1 / len : -1 / len) * d;
   double s0 = 0, s1 = len;  // o + s dir, s in [s0, s1], lies in the box
-  const double po[3] = {o.x, o.y, o.z}, pd[3] = {dir.x, dir.y, dir.z};
-  const double lo[3] = {box.lo.x, box.lo.y, box.lo.z}, hi[3] = {box.hi.x, box.hi.y, box.hi.z};
-  for (int k = 0; k < 3; ++k) {
-    if (pd[k] == 0) {
-      if (po[k] < lo[k] || po[k] > hi[k]) return std::nullopt;
-      continue;
-    }
-    double ta = (lo[k] - po[k]) / pd[k], tb = (hi[k] - po[k]) / pd[k];
-    if (ta > tb) std::swap(ta, tb);
-    s0 = std::max(s0, ta), s1 = std::min(s1, tb);
-    if (s0 > s1) return std::nullopt;
-  }
+  if (!clip_line(o, dir, box, s0, s1)) return std::nullopt;
   const Point3 p0 = o + s0 * dir, p1 = o + s1 * dir;
   if (from_a) return Clipped{p0, p1, s0};
   return Clipped{p1, p0, len - s1};

@@ -29,20 +29,7 @@ namespace {
 // Whether segment [a, b] meets the box.
 bool meets(const Point3& a, const Point3& b, const Box3& box) {
   double t0 = 0, t1 = 1;
-  const double o[3] = {a.x, a.y, a.z}, v[3] = {b.x - a.x, b.y - a.y, b.z - a.z};
-  const double lo[3] = {box.lo.x, box.lo.y, box.lo.z}, hi[3] = {box.hi.x, box.hi.y, box.hi.z};
-  for (int k = 0; k < 3; ++k) {
-    if (v[k] == 0) {
-      if (o[k] < lo[k] || o[k] > hi[k]) return false;
-      continue;
-    }
-    double ta = (lo[k] - o[k]) / v[k], tb = (hi[k] - o[k]) / v[k];
-    if (ta > tb) std::swap(ta, tb);
-    t0 = std::max(t0, ta);
-    t1 = std::min(t1, tb);
-    if (t0 > t1) return false;
-  }
-  return true;
+  return clip_line(a, b - a, box, t0, t1);
 }
 
 }  // namespace

@@ -19,24 +19,6 @@ constexpr double kTangentCosine = 1e-6;
 // How good a crossing is, among crossings at the same place.
 constexpr int kGrazing = 0, kOnBoundary = 1, kTransversal = 2;
 
-// Entry and exit parameters (in [lo, hi]) of line a + w d through box b; false if it misses.
-bool clip(const Point3& a, const Point3& d, const Box3& b, double& lo, double& hi) {
-  const double o[3] = {a.x, a.y, a.z}, v[3] = {d.x, d.y, d.z};
-  const double bl[3] = {b.lo.x, b.lo.y, b.lo.z}, bh[3] = {b.hi.x, b.hi.y, b.hi.z};
-  for (int k = 0; k < 3; ++k) {
-    if (v[k] == 0) {
-      if (o[k] < bl[k] || o[k] > bh[k]) return false;
-      continue;
-    }
-    double ta = (bl[k] - o[k]) / v[k], tb = (bh[k] - o[k]) / v[k];
-    if (ta > tb) std::swap(ta, tb);
-    lo = std::max(lo, ta);
-    hi = std::min(hi, tb);
-    if (lo > hi) return false;
-  }
-  return true;
-}
-
 // Barycentric coordinates of x (in the triangle's plane) with respect to p0 p1 p2.
 void barycentric(const Point3& x, const Point3 p[3], double b[3]) {
   const Point3 e1 = p[1] - p[0], e2 = p[2] - p[0], r = x - p[0];
@@ -101,7 +83,7 @@ void RayQuery::solve(const SurfaceTriangle& t, int depth) {
   const double r = t.deviation + slack_;
   constexpr double kInfinity = std::numeric_limits<double>::infinity();
   double lo = -kInfinity, hi = kInfinity;
-  if (!clip(a_, d_, triangle_box(t, r), lo, hi) || !window(t, r, lo, hi)) return;
+  if (!clip_line(a_, d_, triangle_box(t, r), lo, hi) || !window(t, r, lo, hi)) return;
   const double seg_lo = std::max(lo, 0.0), seg_hi = std::min(hi, std::min(reach(), length_));
   if (seg_lo > seg_hi) return;
   const double c = dot(t.axis, d_);

@@ -42,30 +42,6 @@ void Refiner::init_cell(Cell_handle c) {
                                                        : kOutside.value;
 }
 
-namespace {
-
-/// The range of t for which o + t d lies in `box` (slabs); false when the line
-/// misses the box.
-bool line_in_box(const Point3& o, const Point3& d, const Box3& box, double& t0, double& t1) {
-  t0 = -std::numeric_limits<double>::infinity();
-  t1 = std::numeric_limits<double>::infinity();
-  const double p[3] = {o.x, o.y, o.z}, v[3] = {d.x, d.y, d.z};
-  const double lo[3] = {box.lo.x, box.lo.y, box.lo.z}, hi[3] = {box.hi.x, box.hi.y, box.hi.z};
-  for (int k = 0; k < 3; ++k) {
-    if (v[k] == 0) {
-      if (p[k] < lo[k] || p[k] > hi[k]) return false;
-      continue;
-    }
-    double ta = (lo[k] - p[k]) / v[k], tb = (hi[k] - p[k]) / v[k];
-    if (ta > tb) std::swap(ta, tb);
-    t0 = std::max(t0, ta);
-    t1 = std::min(t1, tb);
-  }
-  return t0 <= t1;
-}
-
-}  // namespace
-
 bool Refiner::dual_segment(Cell_handle c, int i, Point3& a, Point3& b) const {
   // The dual of facet (c, i) lies on the line through the facet's orthocenter
   // perpendicular to it, between the orthocenters of its two cells (or from the
@@ -101,8 +77,8 @@ bool Refiner::dual_segment(Cell_handle c, int i, Point3& a, Point3& b) const {
   };
   const double sc = end_of(c, n), sn = end_of(n, c);
   if (std::isnan(sc) || std::isnan(sn)) return false;  // a flat cell without a center
-  double t0, t1;
-  if (!line_in_box(origin, normal, clip_box_, t0, t1)) return false;
+  double t0 = -std::numeric_limits<double>::infinity(), t1 = std::numeric_limits<double>::infinity();
+  if (!clip_line(origin, normal, clip_box_, t0, t1)) return false;
   const double lo = std::max(std::min(sc, sn), t0), hi = std::min(std::max(sc, sn), t1);
   if (!(lo <= hi)) return false;
   a = origin + (sc <= sn ? lo : hi) * normal;

@@ -4,6 +4,7 @@
 // CLI compile quickly; the refinement core converts at its boundary.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <compare>
@@ -37,6 +38,26 @@ struct Box3 {
     return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y && p.z >= lo.z && p.z <= hi.z;
   }
 };
+
+/// Clips the line o + t d to `box` (slab test): narrows [lo, hi] to the t for
+/// which the point lies in the box; false (lo, hi then meaningless) when that
+/// range is empty. Pass [0, 1] for segment o, o + d, [-inf, inf] for the line.
+inline bool clip_line(const Point3& o, const Point3& d, const Box3& box, double& lo, double& hi) {
+  const double p[3] = {o.x, o.y, o.z}, v[3] = {d.x, d.y, d.z};
+  const double bl[3] = {box.lo.x, box.lo.y, box.lo.z}, bh[3] = {box.hi.x, box.hi.y, box.hi.z};
+  for (int k = 0; k < 3; ++k) {
+    if (v[k] == 0) {
+      if (p[k] < bl[k] || p[k] > bh[k]) return false;
+      continue;
+    }
+    double ta = (bl[k] - p[k]) / v[k], tb = (bh[k] - p[k]) / v[k];
+    if (ta > tb) std::swap(ta, tb);
+    lo = std::max(lo, ta);
+    hi = std::min(hi, tb);
+    if (lo > hi) return false;
+  }
+  return true;
+}
 
 /// Strongly typed integer id: mixing a patch id with a subdomain id does not compile.
 template <class Tag>
