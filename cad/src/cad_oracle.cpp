@@ -174,6 +174,22 @@ SubdomainId CadOracle::locate(const Point3& p) const {
   }
 }
 
+SubdomainId CadOracle::locate_from(const Point3& p, const Point3& known,
+                                   SubdomainId known_label) const {
+  const Model& m = *model_;
+  if (!m.box.contains(p)) return kOutside;
+  try {
+    // The crossing nearest p on [p, known] is the last one on the way to p.
+    const std::optional<cad::RayHit> h = first_hit(m, serial_, p, known);
+    if (!h) return known_label;
+    if (h->tangent || std::fabs(h->cosine) <= 1e-3) return locate(p);
+    const cad::FacePatch& f = m.faces[h->face];
+    return h->cosine > 0 ? f.outward_of : f.inward_of;  // as in locate()
+  } catch (const Standard_Failure& e) {
+    rethrow_occt(e, "locate_from");
+  }
+}
+
 std::optional<SurfaceHit> CadOracle::intersect(const Point3& a, const Point3& b) const {
   const Model& m = *model_;
   // Everything happens on the part of [a, b] in the model box (see clip_to_box).

@@ -82,7 +82,22 @@ void Refiner::insert_initial_points() {
                       std::to_string(stats_.initial_points) +
                       " points): cannot start refinement");
   }
-  for (auto c = tr_.all_cells_begin(); c != tr_.all_cells_end(); ++c) init_cell(c);
+  // Labels spread from cell to neighboring cell (init_cell's `from`); the
+  // first cell of each connected sweep is located from scratch.
+  std::vector<std::pair<Cell_handle, Cell_handle>> sweep;  // (cell, labeled neighbor)
+  for (auto c = tr_.all_cells_begin(); c != tr_.all_cells_end(); ++c) {
+    if (c->info().stamp != 0) continue;
+    sweep.emplace_back(c, Cell_handle());
+    while (!sweep.empty()) {
+      const auto [d, from] = sweep.back();
+      sweep.pop_back();
+      if (d->info().stamp != 0) continue;
+      init_cell(d, from);
+      for (int i = 0; i < 4; ++i) {
+        if (d->neighbor(i)->info().stamp == 0) sweep.emplace_back(d->neighbor(i), d);
+      }
+    }
+  }
   for (auto c = tr_.all_cells_begin(); c != tr_.all_cells_end(); ++c) {
     for (int i = 0; i < 4; ++i) {
       if (c->neighbor(i)->info().stamp > c->info().stamp) update_facet(c, i);
@@ -272,7 +287,9 @@ void Refiner::after_insertion(Vertex_handle v) {
   new_cells_.clear();
   tr_.incident_cells(v, std::back_inserter(new_cells_));
   const std::uint32_t first_new = next_stamp_;
-  for (const Cell_handle& c : new_cells_) init_cell(c);
+  // Each new cell's facet opposite v bounds the conflict zone: the cell
+  // across it is old, hence labeled.
+  for (const Cell_handle& c : new_cells_) init_cell(c, c->neighbor(c->index(v)));
   for (const Cell_handle& c : new_cells_) {
     for (int i = 0; i < 4; ++i) {
       // Facets between two new cells are visited once, from the older stamp.

@@ -85,7 +85,10 @@ class Refiner {
   };
 
   // --- D|O and D|S bookkeeping (restricted_complex.cpp) ---
-  void init_cell(Cell_handle c);
+  /// Stamps c and computes its orthocenter and label. `from`, when it is a
+  /// labeled finite neighbor, lets the oracle label c by a short walk from
+  /// its center (DomainOracle::locate_from) instead of locating from scratch.
+  void init_cell(Cell_handle c, Cell_handle from = Cell_handle());
   /// Recomputes facet (c, i)'s restricted status on both sides and queues it if bad.
   void update_facet(Cell_handle c, int i);
   /// The dual Voronoi edge of facet (c, i), clipped to the enlarged box.

@@ -15,7 +15,7 @@
 
 namespace rdmesh::detail {
 
-void Refiner::init_cell(Cell_handle c) {
+void Refiner::init_cell(Cell_handle c, Cell_handle from) {
   CellInfo& info = c->info();
   info.stamp = next_stamp_++;
   info.facet_patch = {0, 0, 0, 0};
@@ -34,12 +34,18 @@ void Refiner::init_cell(Cell_handle c) {
   }
   info.circumcenter = tet_orthocenter(p, w);
   info.squared_radius = squared_norm(info.circumcenter - p[0]) - w[0];
-  const bool finite_center = std::isfinite(info.circumcenter.x) &&
-                             std::isfinite(info.circumcenter.y) &&
-                             std::isfinite(info.circumcenter.z);
+  const bool finite_center = is_finite(info.circumcenter);
   // Surface only: no cell is in the mesh, labels are never needed.
-  info.label = finite_center && !options_.surface_only ? oracle_.locate(info.circumcenter).value
-                                                       : kOutside.value;
+  if (!finite_center || options_.surface_only) {
+    info.label = kOutside.value;
+    return;
+  }
+  const bool known = from != Cell_handle() && from->info().stamp != 0 && !tr_.is_infinite(from) &&
+                     is_finite(from->info().circumcenter);
+  info.label = known ? oracle_.locate_from(info.circumcenter, from->info().circumcenter,
+                                           SubdomainId{from->info().label})
+                           .value
+                     : oracle_.locate(info.circumcenter).value;
 }
 
 bool Refiner::dual_segment(Cell_handle c, int i, Point3& a, Point3& b) const {

@@ -18,10 +18,6 @@ namespace {
 
 constexpr std::uint64_t kInBox = std::uint64_t{1} << 63;
 
-bool is_finite(const Point3& p) {
-  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
-}
-
 }  // namespace
 
 ImplicitOracle::ImplicitOracle(Box3 box, std::vector<Function> functions,

@@ -10,13 +10,6 @@
 #include "rdmesh/implicit_oracle.h"
 
 namespace rdmesh {
-namespace {
-
-bool is_finite(const Point3& p) {
-  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
-}
-
-}  // namespace
 
 std::optional<Point3> ImplicitOracle::project_on_function(const Point3& p, int k, int a,
                                                           int b) const {

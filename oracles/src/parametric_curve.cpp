@@ -28,10 +28,6 @@ constexpr double kNodes[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5
 constexpr double kWeights[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
                                 0.4786286704993665, 0.2369268850561891};
 
-bool finite(const Point3& p) {
-  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
-}
-
 std::string number(double v) {
   std::ostringstream s;
   s.precision(17);
@@ -81,7 +77,7 @@ void ParametricCurve::build_table() {
   // interval records its end parameter and a bound on the arc-to-chord distance.
   auto eval = [this](double t) {
     const Point3 p = gamma_(t);
-    if (!finite(p)) throw InputError("the curve is not finite at t = " + number(t));
+    if (!is_finite(p)) throw InputError("the curve is not finite at t = " + number(t));
     return p;
   };
   auto split = [&](auto&& self, double a, Point3 pa, double b, Point3 pb, int depth) -> void {

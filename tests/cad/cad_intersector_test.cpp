@@ -140,6 +140,26 @@ TEST_P(SharedStep, PassesOracleConformanceOfSurfaces) {
   expect_oracle_conformance(*oracle, 400, 3, false);
 }
 
+// Labeling by a short walk from a labeled point (what the refiner does for a
+// new cell, from its old neighbor's center) gives locate()'s answer, on the
+// short segments near faces and edges as on the long ones across the box.
+// Measured on these 1500 segments: 0 to 2 differ per file, all where the
+// segment or a ray passes through a face's boundary curve (the crossing is ON
+// the face: one side or the other misses it); OpenCASCADE's own rays side with
+// locate_from as often as with locate.
+TEST_P(SharedStep, LocateFromAKnownPointAgreesWithLocate) {
+  const auto oracle = load_shared(GetParam());
+  if (!oracle) GTEST_SKIP() << kStep << " is absent";
+  int differ = 0, crossed = 0;
+  for (const auto& [a, b] : segments(*oracle, 1500, 23)) {
+    const SubdomainId la = oracle->locate(a), lb = oracle->locate(b);
+    crossed += la != lb;
+    differ += oracle->locate_from(a, b, lb) != la;
+  }
+  EXPECT_GT(crossed, 50);
+  EXPECT_LE(differ, 3);
+}
+
 // All B-spline (t20, wrenchnut: two solids), a periodic B-spline side
 // (periodic_u_cst), helical B-splines with cones (drill), tori and cones (screw).
 INSTANTIATE_TEST_SUITE_P(Files, SharedStep,

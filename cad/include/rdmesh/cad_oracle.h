@@ -77,6 +77,10 @@ class CadOracle final : public DomainOracle {
 
   Box3 bounding_box() const override;
   SubdomainId locate(const Point3& p) const override;
+  /// The face crossed last on the way from `known` to p decides; no crossing
+  /// keeps known_label. A grazing crossing falls back to locate().
+  SubdomainId locate_from(const Point3& p, const Point3& known,
+                          SubdomainId known_label) const override;
   /// The transversal crossing nearest to a; when none is found but the end
   /// labels differ, the label change is bracketed by bisection on locate().
   std::optional<SurfaceHit> intersect(const Point3& a, const Point3& b) const override;

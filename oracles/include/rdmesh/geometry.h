@@ -28,6 +28,9 @@ inline Point3 cross(Point3 a, Point3 b) {
 inline double squared_norm(Point3 a) { return dot(a, a); }
 inline double norm(Point3 a) { return std::sqrt(dot(a, a)); }
 inline double distance(Point3 a, Point3 b) { return norm(a - b); }
+inline bool is_finite(Point3 a) {
+  return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z);
+}
 
 /// Axis-aligned box [lo, hi].
 struct Box3 {

@@ -45,6 +45,18 @@ class DomainOracle {
   /// Label of the subdomain containing p, kOutside (0) when p is outside the domain.
   virtual SubdomainId locate(const Point3& p) const = 0;
 
+  /// locate(p), given a point `known` whose label is `known_label` (what
+  /// locate(known) returns). The refiner labels a new cell from a labeled
+  /// neighbor this way. Oracles whose locate() casts rays across the whole
+  /// domain override it with one short query along [p, known]; the default
+  /// ignores the hint.
+  virtual SubdomainId locate_from(const Point3& p, const Point3& known,
+                                  SubdomainId known_label) const {
+    (void)known;
+    (void)known_label;
+    return locate(p);
+  }
+
   /// A crossing of segment [a, b] with a patch. Guarantee: whenever
   /// locate(a) != locate(b) a hit is returned, its point lies on the segment
   /// within tolerance() of the patch, and its patch separates two labels met
