@@ -78,7 +78,10 @@ void build_accelerator(CadOracle::Model& m) {
     }
     f.triangle_tree = TriangleBvh(own);
     if (f.first_triangle == f.end_triangle) ++untessellated;
-    if (f.kind != SurfaceKind::parametric || f.first_triangle == f.end_triangle) {
+    // Triangle boxes for every tessellated face, analytic ones included: a
+    // face's box holds much empty space (holes, the inside of a curved face),
+    // and a short segment inside a part meets the boxes of many large faces.
+    if (f.first_triangle == f.end_triangle) {
       m.candidates.push_back({face, -1});
       boxes.push_back(f.box);
     } else {

@@ -137,8 +137,9 @@ struct CadOracle::Model {
   /// Every face's tessellation (FacePatch::first_triangle..).
   std::vector<cad::SurfaceTriangle> triangles;
   /// What a segment is tested against, in one tree over their boxes: the
-  /// triangles of parametric faces (boxes inflated by their deviation), and
-  /// every other face as a whole (its box).
+  /// triangles of every tessellated face (boxes inflated by their deviation;
+  /// an analytic face is intersected in closed form once per query, whichever
+  /// of its triangles is met first), and an untessellated face as a whole.
   std::vector<cad::Candidate> candidates;
   TriangleBvh candidate_tree;
   std::vector<PatchInfo> patches;

@@ -52,9 +52,9 @@ void RayQuery::visit(int index) {
   const Candidate& c = m_.candidates[index];
   FaceState& fs = ts_.face(c.face);
   if (fs.occt_done) return;
-  if (c.triangle >= 0) return solve(m_.triangles[c.triangle], 0);
-  if (m_.faces[c.face].kind == SurfaceKind::parametric) {  // no tessellation
-    return occt(c.face, 0, std::min(reach(), length_));
+  if (m_.faces[c.face].kind == SurfaceKind::parametric) {
+    if (c.triangle >= 0) return solve(m_.triangles[c.triangle], 0);
+    return occt(c.face, 0, std::min(reach(), length_));  // no tessellation
   }
   if (!fs.closed_form_done) closed_form(c.face);
   fs.closed_form_done = true;
