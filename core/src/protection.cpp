@@ -116,22 +116,28 @@ double ProtectionPlanner::step_at(const CurveData& d, double a) const {
 double ProtectionPlanner::exit_arc(const CurveData& d, const Point3& q, double r,
                                    bool from_end) const {
   const Curve& curve = *d.c.curve;
-  auto gap = [&](double a) {
-    const double t = curve.parameter_at_length(d.c.info.t_begin, from_end ? d.length - a : a);
-    return distance(curve.point(t), q) - r;
+  const CurveInfo& info = d.c.info;
+  auto param = [&](double a) {
+    return curve.parameter_at_length(info.t_begin, from_end ? d.length - a : a);
   };
+  auto gap = [&](double t) { return distance(curve.point(t), q) - r; };
   // Arc length >= chord: the curve leaves the ball at arc length >= r.
   double lo = 0, hi = std::min(r, d.length);
-  while (gap(hi) < 0) {
+  double t_lo = from_end ? info.t_end : info.t_begin, t_hi = param(hi);
+  while (gap(t_hi) < 0) {
     if (hi >= d.length) return d.length;  // the ball holds the whole curve
-    lo = hi;
+    lo = hi, t_lo = t_hi;
     hi = std::min(d.length, 1.5 * hi + r);
+    t_hi = param(hi);
   }
-  for (int it = 0; it < 50 && hi - lo > 1e-12 * d.length; ++it) {
-    const double mid = 0.5 * (lo + hi);
-    (gap(mid) < 0 ? lo : hi) = mid;
+  // Bisection on the parameter (the arc is monotone in it): a point per step
+  // instead of an arc-length inversion; the arc is measured once at the end.
+  for (int it = 0; it < 50 && std::fabs(t_hi - t_lo) > 1e-13 * (info.t_end - info.t_begin); ++it) {
+    const double mid = 0.5 * (t_lo + t_hi);
+    (gap(mid) < 0 ? t_lo : t_hi) = mid;
   }
-  return hi;
+  const double a = from_end ? curve.length(t_hi, info.t_end) : curve.length(info.t_begin, t_hi);
+  return std::clamp(a, lo, hi);
 }
 
 void ProtectionPlanner::sample_curve(CurveData& d) {
