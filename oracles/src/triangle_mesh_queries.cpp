@@ -61,7 +61,11 @@ bool TriangleMeshOracle::ray_parity(const Point3& p, int dir, int skip, bool for
   const double lo = axis == 0 ? box_.lo.x : (axis == 1 ? box_.lo.y : box_.lo.z);
   const double hi = axis == 0 ? box_.hi.x : (axis == 1 ? box_.hi.y : box_.hi.z);
   const double length = ((dir & 1) ? pa - lo : hi - pa) + 0.01 * box_.diagonal();
-  const Point3 q = p + std::max(length, 0.0) * d;
+  return flip_crossings(p, p + std::max(length, 0.0) * d, skip, force, inside);
+}
+
+bool TriangleMeshOracle::flip_crossings(const Point3& p, const Point3& q, int skip, bool force,
+                                        unsigned char* inside) const {
   bool degenerate = false;
   const SegmentBoxTest meets(p, q);
   bvh_->traverse([&](const Box3& b) { return meets(b); },
@@ -79,6 +83,15 @@ bool TriangleMeshOracle::ray_parity(const Point3& p, int dir, int skip, bool for
   return !degenerate;
 }
 
+int TriangleMeshOracle::innermost(const unsigned char* inside) const {
+  int best = -1;
+  const int count = static_cast<int>(component_volume_.size());
+  for (int c = 0; c < count; ++c) {
+    if (inside[c] && (best < 0 || component_depth_[c] > component_depth_[best])) best = c;
+  }
+  return best;
+}
+
 SubdomainId TriangleMeshOracle::locate(const Point3& p) const {
   if (options_.surface_only || !mesh_box_.contains(p)) return kOutside;
   unsigned char inside[kMaxComponents];
@@ -92,12 +105,23 @@ SubdomainId TriangleMeshOracle::locate(const Point3& p) const {
   bool ok = false;
   for (int i = 0; i < 12 && !ok; ++i) ok = ray_parity(p, i == 0 ? first : (first + i) % 12, -1, false, inside);
   if (!ok) ray_parity(p, first, -1, true, inside);
-  int best = -1;
+  return SubdomainId(innermost(inside) + 1);
+}
+
+SubdomainId TriangleMeshOracle::locate_from(const Point3& p, const Point3& known,
+                                            SubdomainId known_label) const {
+  if (options_.surface_only || !mesh_box_.contains(p)) return kOutside;
   const int count = static_cast<int>(component_volume_.size());
-  for (int c = 0; c < count; ++c) {
-    if (inside[c] && (best < 0 || component_depth_[c] > component_depth_[best])) best = c;
+  if (!mesh_box_.contains(known) || known_label.value < 0 || known_label.value > count) {
+    return locate(p);
   }
-  return SubdomainId(best + 1);
+  // Components never touch, so the ones containing `known` are its innermost
+  // one and that one's ancestors; each crossing of [known, p] flips one.
+  unsigned char inside[kMaxComponents];
+  std::memset(inside, 0, count);
+  for (int c = known_label.value - 1; c >= 0; c = component_parent_[c]) inside[c] = 1;
+  if (!flip_crossings(p, known, -1, false, inside)) return locate(p);  // an edge or a vertex
+  return SubdomainId(innermost(inside) + 1);
 }
 
 std::optional<SurfaceHit> TriangleMeshOracle::intersect(const Point3& a, const Point3& b) const {

@@ -108,7 +108,11 @@ void check_segments(const DomainOracle& o, std::mt19937& rng, int samples) {
     const double length = distance(a, b);
     if (!(length > 100 * tol)) continue;
     const Point3 dir = (1 / length) * (b - a);
-    const bool differ = o.locate(a) != o.locate(b);
+    const SubdomainId la = o.locate(a), lb = o.locate(b);
+    const bool differ = la != lb;
+    // Labeling from a known point (the refiner's walk from a labeled neighbor).
+    EXPECT_EQ(o.locate_from(a, b, lb), la) << "locate_from on " << str(a) << " - " << str(b);
+    EXPECT_EQ(o.locate_from(b, a, la), lb) << "locate_from on " << str(b) << " - " << str(a);
     const std::optional<SurfaceHit> hit = o.intersect(a, b);
     crossing += differ;
     if (differ) {

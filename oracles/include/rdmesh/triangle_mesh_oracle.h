@@ -81,6 +81,10 @@ class TriangleMeshOracle final : public DomainOracle {
   /// The mesh's box, enlarged by 1% of its diagonal on every side.
   Box3 bounding_box() const override { return box_; }
   SubdomainId locate(const Point3& p) const override;
+  /// The parity of the crossings of [p, known] flips the components holding
+  /// `known`; a segment through an edge or a vertex falls back to locate().
+  SubdomainId locate_from(const Point3& p, const Point3& known,
+                          SubdomainId known_label) const override;
   std::optional<SurfaceHit> intersect(const Point3& a, const Point3& b) const override;
   std::vector<SubdomainInfo> subdomains() const override { return subdomain_infos_; }
   std::vector<PatchInfo> patches() const override { return patch_infos_; }
@@ -118,6 +122,10 @@ class TriangleMeshOracle final : public DomainOracle {
   /// component `skip`; false when the ray meets an edge or a vertex (or p lies
   /// on a triangle), unless `force` (then such contacts count half-open).
   bool ray_parity(const Point3& p, int dir, int skip, bool force, unsigned char* inside) const;
+  /// Flips inside[c] for each crossing of [p, q] with component c (same rules).
+  bool flip_crossings(const Point3& p, const Point3& q, int skip, bool force,
+                      unsigned char* inside) const;
+  /// The deepest component flagged in `inside`, -1 for none.
   int innermost(const unsigned char* inside) const;
 
   TriangleSoup mesh_;
