@@ -115,6 +115,13 @@ std::optional<cad::RayHit> first_hit(const CadOracle::Model& m, std::uint64_t se
   return h;
 }
 
+// The label of a segment's start, read off its first crossing: the segment
+// leaves the side the normal points out of when it goes along the normal.
+SubdomainId side_of_start(const CadOracle::Model& m, const cad::RayHit& h) {
+  const cad::FacePatch& f = m.faces[h.face];
+  return h.cosine > 0 ? f.outward_of : f.inward_of;
+}
+
 }  // namespace
 
 CadOracle::CadOracle(std::unique_ptr<Model> model)
@@ -163,9 +170,7 @@ SubdomainId CadOracle::locate(const Point3& p) const {
     for (const Point3& dir : kRays) {
       const std::optional<cad::RayHit> h = first_hit(m, serial_, p, p + reach * dir);
       if (!h) return kOutside;  // the ray leaves the domain without crossing a face
-      const cad::FacePatch& f = m.faces[h->face];
-      // The ray leaves the side the normal points out of when it goes along the normal.
-      answer = h->cosine > 0 ? f.outward_of : f.inward_of;
+      answer = side_of_start(m, *h);
       if (!h->tangent && std::fabs(h->cosine) > 1e-3) return answer;
     }
     return answer;  // every ray grazed: keep the last answer
@@ -183,8 +188,7 @@ SubdomainId CadOracle::locate_from(const Point3& p, const Point3& known,
     const std::optional<cad::RayHit> h = first_hit(m, serial_, p, known);
     if (!h) return known_label;
     if (h->tangent || std::fabs(h->cosine) <= 1e-3) return locate(p);
-    const cad::FacePatch& f = m.faces[h->face];
-    return h->cosine > 0 ? f.outward_of : f.inward_of;  // as in locate()
+    return side_of_start(m, *h);
   } catch (const Standard_Failure& e) {
     rethrow_occt(e, "locate_from");
   }

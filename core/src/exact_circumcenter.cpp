@@ -107,15 +107,6 @@ Point3 rounded(const P& z) {
 
 }  // namespace
 
-Point3 exact_tet_circumcenter(Point3 a, Point3 b, Point3 c, Point3 d) {
-  if (flat(a, b, c, d)) return {kInf, kInf, kInf};
-  if (const auto z = double_double_orthocenter({a, b, c, d}, {0, 0, 0, 0})) return *z;
-  using EK = CGAL::Exact_predicates_exact_constructions_kernel;
-  const auto p = [](Point3 q) { return EK::Point_3(q.x, q.y, q.z); };
-  const EK::Point_3 center = CGAL::circumcenter(p(a), p(b), p(c), p(d));
-  return rounded(center);
-}
-
 Point3 exact_tet_orthocenter(const std::array<Point3, 4>& p, const std::array<double, 4>& w) {
   if (flat(p[0], p[1], p[2], p[3])) return {kInf, kInf, kInf};
   if (const auto z = double_double_orthocenter(p, w)) return *z;

@@ -11,9 +11,10 @@
 
 namespace rdmesh::detail {
 
-/// Circumcenter of tetrahedron abcd computed exactly and rounded (exact_circumcenter.cpp);
-/// infinite coordinates for a flat tetrahedron.
-Point3 exact_tet_circumcenter(Point3 a, Point3 b, Point3 c, Point3 d);
+/// Orthocenter (weighted circumcenter) of a nearly flat weighted tetrahedron,
+/// accurate where the double formula is not (exact_circumcenter.cpp): zero
+/// weights give the circumcenter; infinite coordinates for a flat tetrahedron.
+Point3 exact_tet_orthocenter(const std::array<Point3, 4>& p, const std::array<double, 4>& w);
 
 /// Circumcenter of tetrahedron abcd: the double formula, or the exact
 /// construction when the tetrahedron is so flat that the formula is unreliable
@@ -24,14 +25,10 @@ inline Point3 tet_circumcenter(Point3 a, Point3 b, Point3 c, Point3 d) {
   const double uu = squared_norm(u), vv = squared_norm(v), ww = squared_norm(w);
   const Point3 vw = cross(v, w), wu = cross(w, u), uv = cross(u, v);
   const double det = dot(u, vw);
-  if (det * det <= 1e-12 * uu * vv * ww) return exact_tet_circumcenter(a, b, c, d);
+  if (det * det <= 1e-12 * uu * vv * ww) return exact_tet_orthocenter({a, b, c, d}, {0, 0, 0, 0});
   const Point3 num = uu * vw + vv * wu + ww * uv;
   return a + (0.5 / det) * num;
 }
-
-/// Exact orthocenter (weighted circumcenter) of weighted tetrahedron abcd,
-/// rounded (exact_circumcenter.cpp); infinite coordinates for a flat tetrahedron.
-Point3 exact_tet_orthocenter(const std::array<Point3, 4>& p, const std::array<double, 4>& w);
 
 /// Orthocenter of tetrahedron p with weights w: the point of equal power
 /// |z - p_i|^2 - w_i to its four vertices (the circumcenter when all weights

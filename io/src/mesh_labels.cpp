@@ -91,7 +91,7 @@ void check_mesh(const TetMesh& mesh) {
   }
   for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
     const Point3& p = mesh.vertices[i];
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+    if (!is_finite(p)) {
       throw InternalError("TetMesh: vertex " + std::to_string(i) + " has a non-finite coordinate");
     }
   }

@@ -12,7 +12,7 @@ namespace rdmesh {
 PolylineCurve::PolylineCurve(std::vector<Point3> points) {
   for (std::size_t i = 0; i < points.size(); ++i) {
     const Point3& p = points[i];
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+    if (!is_finite(p)) {
       throw InputError("point " + std::to_string(i) + " is not finite");
     }
     if (points_.empty() || !(points_.back() == p)) points_.push_back(p);
