@@ -262,8 +262,8 @@ std::unique_ptr<CadOracle::Model> build_model(ReadShape read, const std::string&
       f.box.hi = f.box.hi + Point3{m->tolerance, m->tolerance, m->tolerance};
     }
     collect_curves(*m, patch_faces);
-    compute_seeds(*m);
     build_accelerator(*m);
+    compute_seeds(*m);  // from the accelerator's tessellation
   } catch (const InputError& e) {
     if (!e.file().empty() || source.empty()) throw;
     throw InputError(source, e.what());

@@ -155,7 +155,7 @@ struct CadOracle::Model {
 namespace cad {
 /// Builds the oracle data from a read shape (cad_build.cpp). Throws InputError.
 std::unique_ptr<CadOracle::Model> build_model(ReadShape read, const std::string& source);
-/// Picks points inside each face from a coarse tessellation (cad_seeds.cpp).
+/// Picks points inside each face from its tessellation, built first (cad_seeds.cpp).
 void compute_seeds(CadOracle::Model& model);
 /// Builds each face's cells, triangles and boundary curves, and the triangle trees
 /// (face_tessellation.cpp, face_boundary.cpp).

@@ -1,10 +1,12 @@
-// Initial points on each face: interior points of a coarse BRepMesh
-// tessellation's triangles, taken in the face's (u, v) domain and evaluated on
-// the true surface. The tessellation only chooses where to look.
-#include <BRepMesh_IncrementalMesh.hxx>
+// Initial points on each face: centroids of the face's own (u, v) tessellation
+// (the accelerator's, face_tessellation.h) that its cells place inside the
+// face, evaluated on the true surface. The tessellation only chooses where to
+// look. Few points suffice: RR-7912 starts from three per patch and rules
+// R3-R4 add what the surface needs; every seed stays a vertex of the mesh, so a
+// dense seeding only makes the mesh finer where nothing asked for it.
 #include <BRep_Tool.hxx>
-#include <Poly_Triangulation.hxx>
 #include <algorithm>
+#include <array>
 #include <gp_Pnt2d.hxx>
 
 #include "cad_model.h"
@@ -12,42 +14,52 @@
 namespace rdmesh::cad {
 namespace {
 
+constexpr std::size_t kMaxSeeds = 6;
+
 Point3 evaluate(const FacePatch& f, double u, double v) {
   const gp_Pnt p = f.surface->Value(u, v);
   return {p.X(), p.Y(), p.Z()};
 }
 
-bool inside(const FacePatch& f, double u, double v) {
+bool classified_inside(const FacePatch& f, double u, double v) {
+  switch (f.cells.state_at(u, v)) {
+    case UvState::inside:
+      return true;
+    case UvState::outside:
+      return false;
+    case UvState::boundary:
+      break;
+  }
   return f.classifier->Perform(gp_Pnt2d(u, v)) == TopAbs_IN;
 }
 
-std::vector<Point3> from_triangulation(const FacePatch& f) {
-  std::vector<Point3> out;
-  TopLoc_Location loc;
-  const Handle(Poly_Triangulation) tri = BRep_Tool::Triangulation(f.face, loc);
-  if (tri.IsNull() || !tri->HasUVNodes() || tri->NbTriangles() == 0) return out;
-  // Centroids of up to kMaxSeeds spread triangles; three interior points per
-  // triangle when the face has fewer than three triangles.
-  constexpr int kMaxSeeds = 48;
-  const int n = tri->NbTriangles();
-  const int picks = std::min(n, kMaxSeeds);
-  constexpr double kBary[4][3] = {{1.0 / 3, 1.0 / 3, 1.0 / 3},
-                                  {4.0 / 6, 1.0 / 6, 1.0 / 6},
-                                  {1.0 / 6, 4.0 / 6, 1.0 / 6},
-                                  {1.0 / 6, 1.0 / 6, 4.0 / 6}};
-  const int first = n >= 3 ? 0 : 1, last = n >= 3 ? 1 : 4;
-  for (int k = 0; k < picks; ++k) {
-    const int t = 1 + static_cast<int>((static_cast<long long>(k) * n) / picks);
-    int a, b, c;
-    tri->Triangle(t).Get(a, b, c);
-    const gp_Pnt2d pa = tri->UVNode(a), pb = tri->UVNode(b), pc = tri->UVNode(c);
-    for (int j = first; j < last; ++j) {
-      const double* w = kBary[j];
-      const double u = w[0] * pa.X() + w[1] * pb.X() + w[2] * pc.X();
-      const double v = w[0] * pa.Y() + w[1] * pb.Y() + w[2] * pc.Y();
-      if (inside(f, u, v)) out.push_back(evaluate(f, u, v));
-    }
+/// Up to kMaxSeeds points spread over the face's triangles (their order
+/// follows the cells' kd-tree, so spread indices are spread in space):
+/// centroids the cells call inside first, then any centroid inside the face.
+std::vector<Point3> from_tessellation(const CadOracle::Model& m, const FacePatch& f) {
+  std::vector<std::array<double, 2>> sure, unsure;
+  for (int t = f.first_triangle; t < f.end_triangle; ++t) {
+    const SurfaceTriangle& s = m.triangles[t];
+    const double u = (s.uv[0][0] + s.uv[1][0] + s.uv[2][0]) / 3;
+    const double v = (s.uv[0][1] + s.uv[1][1] + s.uv[2][1]) / 3;
+    const UvState state = f.cells.state_at(u, v);
+    if (state == UvState::inside) sure.push_back({u, v});
+    if (state == UvState::boundary) unsure.push_back({u, v});
   }
+  std::vector<Point3> out;
+  auto spread = [&](const std::vector<std::array<double, 2>>& uv, bool check) {
+    const std::size_t n = uv.size();
+    if (n == 0) return;
+    // Every candidate when few are needed from few; else evenly spaced ones.
+    const std::size_t tries = check ? n : std::min(n, kMaxSeeds);
+    for (std::size_t k = 0; k < tries && out.size() < kMaxSeeds; ++k) {
+      const std::size_t i = check ? k : (k * n) / tries;
+      if (check && !classified_inside(f, uv[i][0], uv[i][1])) continue;
+      out.push_back(evaluate(f, uv[i][0], uv[i][1]));
+    }
+  };
+  spread(sure, false);
+  if (out.size() < 3) spread(unsure, true);
   return out;
 }
 
@@ -58,7 +70,7 @@ std::vector<Point3> from_grid(const FacePatch& f) {
     for (int j = 1; j < kGrid && out.size() < 12; ++j) {
       const double u = f.u0 + (f.u1 - f.u0) * (i * 7 % kGrid) / kGrid;
       const double v = f.v0 + (f.v1 - f.v0) * (j * 11 % kGrid) / kGrid;
-      if (inside(f, u, v)) out.push_back(evaluate(f, u, v));
+      if (classified_inside(f, u, v)) out.push_back(evaluate(f, u, v));
     }
   }
   return out;
@@ -67,12 +79,10 @@ std::vector<Point3> from_grid(const FacePatch& f) {
 }  // namespace
 
 void compute_seeds(CadOracle::Model& m) {
-  const double deflection = 0.02 * m.box.diagonal();
-  BRepMesh_IncrementalMesh mesher(m.shape, deflection, false, 0.5, false);
   m.seeds.assign(m.faces.size(), {});
   int thin = 0;
   for (std::size_t i = 0; i < m.faces.size(); ++i) {
-    std::vector<Point3> pts = from_triangulation(m.faces[i]);
+    std::vector<Point3> pts = from_tessellation(m, m.faces[i]);
     if (pts.size() < 3) {
       std::vector<Point3> more = from_grid(m.faces[i]);
       pts.insert(pts.end(), more.begin(), more.end());
