@@ -298,6 +298,28 @@ std::string ProtectionPlanner::name(const BallRef& b) const {
                      : "curve " + curves_[b.curve].c.info.name;
 }
 
+bool ProtectionPlanner::related(const BallRef& a, const BallRef& b) const {
+  if (a.curve >= 0 && b.curve >= 0) return a.curve == b.curve;
+  if (a.curve < 0 && b.curve < 0) return false;
+  const BallRef& q = a.curve < 0 ? a : b;
+  const CurveData& d = curves_[(a.curve < 0 ? b : a).curve];
+  return d.start == q.corner || d.end == q.corner;
+}
+
+double ProtectionPlanner::feature_distance(const BallRef& b, const Point3& x) const {
+  if (b.curve < 0) return distance(x, corners_[b.corner].point);
+  const CurveData& d = curves_[b.curve];
+  const std::vector<BallSample>& s = d.samples;
+  const int last = static_cast<int>(s.size()) - 1;
+  auto arc = [&](int i, int j) {
+    return distance(x, d.c.curve->point(d.c.curve->closest(x, s[i].t, s[j].t)));
+  };
+  double best = arc(std::max(0, b.index - 1), std::min(last, b.index + 1));
+  // A closed curve's first sample is also its last: the arc before it too.
+  if (d.c.info.closed && b.index == 0 && last >= 1) best = std::min(best, arc(last - 1, last));
+  return best;
+}
+
 bool ProtectionPlanner::separate_balls(bool record) {
   // Every ball once: corners, then the samples of each curve between its ends
   // (a closed curve's first sample stands for its repeated last one).
@@ -378,6 +400,15 @@ bool ProtectionPlanner::separate_balls(bool record) {
               if (record) keep_visible(b.ref, o.ref, dist);
               const double need = b.radius + o.radius + kGap * std::min(b.radius, o.radius);
               if (dist >= need || adjacent(b.ref, o.ref)) continue;
+              // Unrelated features: overlapping balls are fine while each
+              // stays clear of the other's feature; only one that does not shrinks.
+              double fb = 1, fo = 1;
+              const bool unrelated = !related(b.ref, o.ref);
+              if (unrelated) {
+                fb = feature_distance(o.ref, b.center) / ((1 + kGap) * b.radius);
+                fo = feature_distance(b.ref, o.center) / ((1 + kGap) * o.radius);
+                if (fb >= 1 && fo >= 1) continue;
+              }
               conflict = true;
               if (record) {
                 // Unresolved: at least neither ball may hold the other's centre.
@@ -388,6 +419,11 @@ bool ProtectionPlanner::separate_balls(bool record) {
                     std::find(unresolved_.begin(), unresolved_.end(), what) == unresolved_.end()) {
                   unresolved_.push_back(what);
                 }
+                continue;
+              }
+              if (unrelated) {
+                if (fb < 1) factor[k] = std::min(factor[k], 0.95 * fb);
+                if (fo < 1) factor[other] = std::min(factor[other], 0.95 * fo);
                 continue;
               }
               const double f = 0.95 * dist / need;
@@ -441,7 +477,7 @@ bool ProtectionPlanner::shrink(const std::vector<BallRef>& balls, ProtectionPlan
       continue;
     }
     if (b.curve < 0 && (b.corner < 0 || b.corner >= static_cast<int>(corners_.size()))) continue;
-    changed = shrink_ball(b, 0.5) || changed;
+    changed = shrink_ball(b, b.factor) || changed;
   }
   if (!changed) return false;
   resolve();

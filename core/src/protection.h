@@ -8,13 +8,19 @@
 //   (B1) consecutive balls of a curve overlap (a corner's ball overlaps the
 //        first ball of each incident curve), so the balls of a curve cover it:
 //        |c_i - c_j| <= r_i + r_j - kOverlap min(r_i, r_j);
-//   (B2) any two balls that are not consecutive are disjoint, with a margin:
-//        |c_i - c_j| >= r_i + r_j + kGap min(r_i, r_j);
+//   (B2) two balls that are not consecutive are disjoint, with a margin,
+//        |c_i - c_j| >= r_i + r_j + kGap min(r_i, r_j), when they belong to
+//        the same curve, or one is a corner of the other's curve. Balls of
+//        unrelated features may overlap, but neither may come near the other's
+//        feature: the distance from c_i to feature j near c_j is at least
+//        (1 + kGap) r_i, and the other way round;
 //   (B3) the chord between consecutive centres is at most twice the edge size
 //        (rule R2 of the paper: the restricted edge's ball within the size)
 //        and stays within facet_distance of the curve.
 // Then the restricted Delaunay triangulation of each curve D|L_j is exactly the
-// chain of its consecutive ball centres, whatever the angles at which features
+// chain of its consecutive ball centres (a point of the curve has negative
+// power to one of its own balls and positive power to every ball that does not
+// contain it, so no other ball's power cell reaches the curve), whatever the angles at which features
 // meet (rule R1 never fires), and every refinement point of rules R3-R5 lies
 // outside all balls (a point of non-negative power to every vertex), so no
 // later insertion encroaches a curve.
@@ -61,6 +67,7 @@ struct BallRef {
   int curve = -1;
   int index = 0;
   int corner = -1;
+  double factor = 0.5;  ///< shrink(): the ball's new size, as a fraction of its size
 };
 
 struct ProtectionPlan {
@@ -94,8 +101,9 @@ class ProtectionPlanner {
 
   /// Samples every curve and shrinks balls until (B1)-(B3) hold.
   ProtectionPlan plan();
-  /// Halves the given balls of the last plan (a refinement found them reaching
-  /// into a patch their feature does not bound) and plans again into `plan`;
+  /// Shrinks the given balls of the last plan by their factors (a refinement
+  /// found them reaching into a patch their feature does not bound, or two
+  /// unrelated ones overlapping where the surface bends) and plans again into `plan`;
   /// false (plan untouched) when none of them can shrink any more.
   bool shrink(const std::vector<BallRef>& balls, ProtectionPlan& plan);
 
@@ -128,6 +136,12 @@ class ProtectionPlanner {
   void keep_visible(const BallRef& a, const BallRef& b, double dist);
   /// Shrinks balls whose arcs violate (B3); true if any changed.
   bool check_arcs();
+  /// Whether B2 asks a and b to be disjoint: balls of one curve, or a corner
+  /// and a ball of one of its curves.
+  bool related(const BallRef& a, const BallRef& b) const;
+  /// Distance from x to ball b's feature near b: the corner itself, or the
+  /// arc of its curve between the samples next to it.
+  double feature_distance(const BallRef& b, const Point3& x) const;
   /// Shrinks balls violating (B2); true if any changed. With `record`, only
   /// records the violating pairs as unresolved.
   bool separate_balls(bool record);

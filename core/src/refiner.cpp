@@ -113,6 +113,19 @@ void Refiner::insert_initial_points() {
 }
 
 void Refiner::refine(bool stop_on_conflict) {
+  may_shrink_ = stop_on_conflict;
+  if (may_shrink_ && plan_) {
+    // The facets between the balls alone already show most overlaps that
+    // stray from the surface: shrink them before any refinement work.
+    for (auto c = tr_.finite_cells_begin(); c != tr_.finite_cells_end(); ++c) {
+      for (int i = 0; i < 4; ++i) {
+        if (c->info().facet_patch[i] != 0 && c->neighbor(i)->info().stamp > c->info().stamp) {
+          overlap_conflict(c, i);
+        }
+      }
+    }
+    if (!conflicts_.empty()) return;
+  }
   for (;;) {
     if (!arc_queue_.empty()) {
       const ArcEntry e = arc_queue_.top();

@@ -106,6 +106,15 @@ class Refiner {
   /// feature does not bound the facet's patch and whose ball reaches its
   /// surface centre; records it in conflicts_.
   bool ball_conflict(Cell_handle c, int i);
+  /// A facet of D|S joining the balls of unrelated features (B2 lets those
+  /// overlap, and refinement never puts a point inside them) whose centroid
+  /// strays beyond the facet distance from the surface along its normal:
+  /// records those balls in conflicts_, so that they shrink (refine(true) only).
+  void overlap_conflict(Cell_handle c, int i);
+  /// The plan's ball of a weighted vertex.
+  BallRef ball_of(const VertexInfo& v) const;
+  /// Records b in conflicts_ once.
+  void add_conflict(const BallRef& b);
 
   // --- D|L bookkeeping (restricted_curves.cpp) ---
   void load_curves();
@@ -156,6 +165,7 @@ class Refiner {
   MeshOptions options_;
   const ProtectionPlan* plan_;  ///< null: RR-7912's R1/R2 on the curves
   std::vector<BallRef> conflicts_;
+  bool may_shrink_ = false;  ///< refine(true): the caller shrinks balls found in conflict
   Box3 clip_box_;              ///< oracle box with a margin: rays are clipped to it
   double min_size_sq_;         ///< termination guard (squared)
   double facet_shape_bound_;   ///< 4 sin^2(facet angle): min edge^2 / R^2 below it is bad

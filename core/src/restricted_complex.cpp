@@ -110,6 +110,7 @@ void Refiner::update_facet(Cell_handle c, int i) {
   n->info().facet_patch[j] = hit->patch.value;
   n->info().surface_center[j] = hit->point;
 
+  overlap_conflict(c, i);
   const double badness = facet_badness(c, i);
   if (badness > 0) facet_queue_.push({badness, c->info().stamp, c, i});
 }
@@ -170,25 +171,84 @@ bool Refiner::ball_conflict(Cell_handle c, int i) {
     // near or in this ball only when the ball reaches the patch (an early,
     // coarse facet far from the ball is refined as usual).
     if (squared_norm(center - to_point3(v->point())) > 1.5 * w) continue;
-    const VertexInfo& info = v->info();
-    BallRef ref;
-    if (info.dim == FeatureDim::kCorner) {
-      ref.corner = info.feature - 1;
-    } else {
-      const std::vector<BallSample>& s = plan_->curves[info.feature - 1].samples;
-      const auto it = std::lower_bound(s.begin(), s.end(), info.t,
-                                       [](const BallSample& b, double t) { return b.t < t; });
-      ref.curve = info.feature - 1;
-      ref.index = static_cast<int>(it - s.begin());
-    }
-    if (std::none_of(conflicts_.begin(), conflicts_.end(), [&](const BallRef& b) {
-          return b.curve == ref.curve && b.index == ref.index && b.corner == ref.corner;
-        })) {
-      conflicts_.push_back(ref);
-    }
+    add_conflict(ball_of(v->info()));
     return true;
   }
   return false;
+}
+
+BallRef Refiner::ball_of(const VertexInfo& info) const {
+  BallRef ref;
+  if (info.dim == FeatureDim::kCorner) {
+    ref.corner = info.feature - 1;
+  } else {
+    const std::vector<BallSample>& s = plan_->curves[info.feature - 1].samples;
+    const auto it = std::lower_bound(s.begin(), s.end(), info.t,
+                                     [](const BallSample& b, double t) { return b.t < t; });
+    ref.curve = info.feature - 1;
+    ref.index = static_cast<int>(it - s.begin());
+  }
+  return ref;
+}
+
+void Refiner::add_conflict(const BallRef& ref) {
+  for (BallRef& b : conflicts_) {
+    if (b.curve == ref.curve && b.index == ref.index && b.corner == ref.corner) {
+      b.factor = std::min(b.factor, ref.factor);
+      return;
+    }
+  }
+  conflicts_.push_back(ref);
+}
+
+void Refiner::overlap_conflict(Cell_handle c, int i) {
+  if (!plan_ || !may_shrink_) return;
+  // Unrelated: two curves, or a corner that does not end the curve.
+  auto unrelated = [&](const VertexInfo& a, const VertexInfo& b) {
+    if (a.dim == FeatureDim::kCurve && b.dim == FeatureDim::kCurve) return a.feature != b.feature;
+    if (a.dim == FeatureDim::kCorner && b.dim == FeatureDim::kCorner) return a.feature != b.feature;
+    const VertexInfo& q = a.dim == FeatureDim::kCorner ? a : b;
+    const CurveInfo& curve = curves_[(a.dim == FeatureDim::kCorner ? b : a).feature - 1].info;
+    return curve.closed || (curve.start.value != q.feature && curve.end.value != q.feature);
+  };
+  // The overlapping pairs of unrelated balls among the facet's vertices.
+  std::array<Vertex_handle, 6> pairs;
+  std::array<double, 6> factors;
+  int n = 0;
+  for (int x = 1; x < 4; ++x) {
+    const Vertex_handle a = c->vertex((i + x) & 3);
+    const double wa = a->point().weight();
+    if (wa == 0) continue;
+    for (int y = x + 1; y < 4; ++y) {
+      const Vertex_handle b = c->vertex((i + y) & 3);
+      const double wb = b->point().weight();
+      if (wb == 0 || !unrelated(a->info(), b->info())) continue;
+      const double ra = std::sqrt(wa), rb = std::sqrt(wb);
+      const double need = ra + rb + ProtectionPlanner::kGap * std::min(ra, rb);
+      const double dist = distance(to_point3(a->point()), to_point3(b->point()));
+      if (dist >= need) continue;
+      // Down to disjoint at once (B2 for related balls), rather than by halves.
+      factors[n] = factors[n + 1] = std::min(0.5, 0.95 * dist / need);
+      pairs[n++] = a;
+      pairs[n++] = b;
+    }
+  }
+  if (n == 0) return;
+  // The surface within the facet distance of the centroid, along the normal.
+  const Point3 p[3] = {to_point3(c->vertex((i + 1) & 3)->point()),
+                       to_point3(c->vertex((i + 2) & 3)->point()),
+                       to_point3(c->vertex((i + 3) & 3)->point())};
+  const Point3 normal = cross(p[1] - p[0], p[2] - p[0]);
+  const double len = norm(normal);
+  if (!(len > 0)) return;
+  const Point3 g = (1.0 / 3) * (p[0] + p[1] + p[2]);
+  const Point3 reach = (1.5 * criteria_.facet_distance / len) * normal;
+  if (oracle_.intersect(g - reach, g + reach)) return;
+  for (int k = 0; k < n; ++k) {
+    BallRef ref = ball_of(pairs[k]->info());
+    ref.factor = factors[k];
+    add_conflict(ref);
+  }
 }
 
 bool Refiner::on_patch(const VertexInfo& v, int patch) const {

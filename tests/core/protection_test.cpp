@@ -1,10 +1,13 @@
 // The protecting-ball planner (core/src/protection.h): on real curve layouts,
 // including curves meeting at 30 degrees and tangent curves meeting at a
 // corner, the plan satisfies B1 (consecutive balls overlap), B2 (other balls
-// are disjoint, with the margin) and B3 (chords within twice the edge size and
+// of a curve and its corners are disjoint, with the margin; balls of unrelated
+// features keep clear of each other's feature) and B3 (chords within twice the edge size and
 // within facet_distance of the curve).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -98,15 +101,48 @@ void expect_protected(const Layout& l, const ProtectionPlan& plan, const Criteri
     return !info.closed && ((info.start.value == q.index + 1 && s.index == 1) ||
                             (info.end.value == q.index + 1 && s.index == last));
   };
-  std::size_t overlapping = 0;
+  // Balls of one curve, or a corner and a ball of one of its curves, must be
+  // disjoint; balls of unrelated features may overlap while neither comes
+  // near a point of the other's feature.
+  auto related = [&](const Ball& a, const Ball& b) {
+    if (a.curve >= 0 && b.curve >= 0) return a.curve == b.curve;
+    if (a.curve < 0 && b.curve < 0) return false;
+    const Ball& q = a.curve < 0 ? a : b;
+    const CurveInfo& info = l.curves[(a.curve < 0 ? b : a).curve].info;
+    return !info.closed && (info.start.value == q.index + 1 || info.end.value == q.index + 1);
+  };
+  // Distance from x to b's whole feature, from a dense sampling refined by closest().
+  auto feature_distance = [&](const Ball& b, const Point3& x) {
+    if (b.curve < 0) return distance(x, l.corners[b.index].point);
+    const ProtectedCurve& c = l.curves[b.curve];
+    const double t0 = c.info.t_begin, t1 = c.info.t_end;
+    constexpr int kSamples = 400;
+    double best = HUGE_VAL;
+    for (int k = 0; k < kSamples; ++k) {
+      const double ta = t0 + (t1 - t0) * k / kSamples, tb = t0 + (t1 - t0) * (k + 1) / kSamples;
+      best = std::min(best, distance(x, c.curve->point(c.curve->closest(x, ta, tb))));
+    }
+    return best;
+  };
+  std::size_t overlapping = 0, touching = 0;
   for (std::size_t a = 0; a < balls.size(); ++a) {
     for (std::size_t b = a + 1; b < balls.size(); ++b) {
       if (adjacent(balls[a], balls[b])) continue;
       const double need = balls[a].r + balls[b].r + Planner::kGap * std::min(balls[a].r, balls[b].r);
-      if (distance(balls[a].c, balls[b].c) < need * (1 - 1e-12)) ++overlapping;
+      if (distance(balls[a].c, balls[b].c) >= need * (1 - 1e-12)) continue;
+      if (related(balls[a], balls[b])) {
+        ++overlapping;
+        continue;
+      }
+      const double reach = 1 + Planner::kGap;
+      if (feature_distance(balls[b], balls[a].c) < reach * balls[a].r * (1 - 1e-9) ||
+          feature_distance(balls[a], balls[b].c) < reach * balls[b].r * (1 - 1e-9)) {
+        ++touching;
+      }
     }
   }
-  EXPECT_EQ(overlapping, 0u) << "non-consecutive balls overlap";
+  EXPECT_EQ(overlapping, 0u) << "balls of one curve (or a corner's and its curve's) overlap";
+  EXPECT_EQ(touching, 0u) << "a ball comes near another feature";
 }
 
 ProtectionPlan plan_for(const Layout& l, const Criteria& c, double min_size) {
