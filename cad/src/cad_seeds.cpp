@@ -14,7 +14,9 @@
 namespace rdmesh::cad {
 namespace {
 
-constexpr std::size_t kMaxSeeds = 6;
+// Per face; a model of few faces (a torus: one face, no curve, no corner) gets
+// up to kModelSeeds in all, so that the points span its volume.
+constexpr std::size_t kMaxSeeds = 6, kModelSeeds = 48;
 
 Point3 evaluate(const FacePatch& f, double u, double v) {
   const gp_Pnt p = f.surface->Value(u, v);
@@ -33,10 +35,11 @@ bool classified_inside(const FacePatch& f, double u, double v) {
   return f.classifier->Perform(gp_Pnt2d(u, v)) == TopAbs_IN;
 }
 
-/// Up to kMaxSeeds points spread over the face's triangles (their order
+/// Up to max_seeds points spread over the face's triangles (their order
 /// follows the cells' kd-tree, so spread indices are spread in space):
 /// centroids the cells call inside first, then any centroid inside the face.
-std::vector<Point3> from_tessellation(const CadOracle::Model& m, const FacePatch& f) {
+std::vector<Point3> from_tessellation(const CadOracle::Model& m, const FacePatch& f,
+                                     std::size_t max_seeds) {
   std::vector<std::array<double, 2>> sure, unsure;
   for (int t = f.first_triangle; t < f.end_triangle; ++t) {
     const SurfaceTriangle& s = m.triangles[t];
@@ -51,8 +54,8 @@ std::vector<Point3> from_tessellation(const CadOracle::Model& m, const FacePatch
     const std::size_t n = uv.size();
     if (n == 0) return;
     // Every candidate when few are needed from few; else evenly spaced ones.
-    const std::size_t tries = check ? n : std::min(n, kMaxSeeds);
-    for (std::size_t k = 0; k < tries && out.size() < kMaxSeeds; ++k) {
+    const std::size_t tries = check ? n : std::min(n, max_seeds);
+    for (std::size_t k = 0; k < tries && out.size() < max_seeds; ++k) {
       const std::size_t i = check ? k : (k * n) / tries;
       if (check && !classified_inside(f, uv[i][0], uv[i][1])) continue;
       out.push_back(evaluate(f, uv[i][0], uv[i][1]));
@@ -80,9 +83,10 @@ std::vector<Point3> from_grid(const FacePatch& f) {
 
 void compute_seeds(CadOracle::Model& m) {
   m.seeds.assign(m.faces.size(), {});
+  const std::size_t max_seeds = std::max(kMaxSeeds, kModelSeeds / std::max<std::size_t>(1, m.faces.size()));
   int thin = 0;
   for (std::size_t i = 0; i < m.faces.size(); ++i) {
-    std::vector<Point3> pts = from_tessellation(m, m.faces[i]);
+    std::vector<Point3> pts = from_tessellation(m, m.faces[i], max_seeds);
     if (pts.size() < 3) {
       std::vector<Point3> more = from_grid(m.faces[i]);
       pts.insert(pts.end(), more.begin(), more.end());

@@ -115,11 +115,13 @@ void Refiner::insert_initial_points() {
 void Refiner::refine(bool stop_on_conflict) {
   may_shrink_ = stop_on_conflict;
   if (may_shrink_ && plan_) {
-    // The facets between the balls alone already show most overlaps that
-    // stray from the surface: shrink them before any refinement work.
+    // The facets between the balls alone already show most balls that reach
+    // a patch their feature does not bound (R3), and most overlaps that stray
+    // from the surface: shrink them before any refinement work.
     for (auto c = tr_.finite_cells_begin(); c != tr_.finite_cells_end(); ++c) {
       for (int i = 0; i < 4; ++i) {
         if (c->info().facet_patch[i] != 0 && c->neighbor(i)->info().stamp > c->info().stamp) {
+          if (facet_badness(c, i) >= 1e300) ball_conflict(c, i);
           overlap_conflict(c, i);
         }
       }

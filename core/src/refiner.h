@@ -109,7 +109,8 @@ class Refiner {
   /// A facet of D|S joining the balls of unrelated features (B2 lets those
   /// overlap, and refinement never puts a point inside them) whose centroid
   /// strays beyond the facet distance from the surface along its normal:
-  /// records those balls in conflicts_, so that they shrink (refine(true) only).
+  /// records those balls in conflicts_, so that they shrink (refine(true)
+  /// checks the facets between the balls this way before refining).
   void overlap_conflict(Cell_handle c, int i);
   /// The plan's ball of a weighted vertex.
   BallRef ball_of(const VertexInfo& v) const;

@@ -110,7 +110,6 @@ void Refiner::update_facet(Cell_handle c, int i) {
   n->info().facet_patch[j] = hit->patch.value;
   n->info().surface_center[j] = hit->point;
 
-  overlap_conflict(c, i);
   const double badness = facet_badness(c, i);
   if (badness > 0) facet_queue_.push({badness, c->info().stamp, c, i});
 }
