@@ -4,10 +4,8 @@
 // look. Few points suffice: RR-7912 starts from three per patch and rules
 // R3-R4 add what the surface needs; every seed stays a vertex of the mesh, so a
 // dense seeding only makes the mesh finer where nothing asked for it.
-#include <BRep_Tool.hxx>
 #include <algorithm>
 #include <array>
-#include <gp_Pnt2d.hxx>
 
 #include "cad_model.h"
 
@@ -24,15 +22,9 @@ Point3 evaluate(const FacePatch& f, double u, double v) {
 }
 
 bool classified_inside(const FacePatch& f, double u, double v) {
-  switch (f.cells.state_at(u, v)) {
-    case UvState::inside:
-      return true;
-    case UvState::outside:
-      return false;
-    case UvState::boundary:
-      break;
-  }
-  return f.classifier->Perform(gp_Pnt2d(u, v)) == TopAbs_IN;
+  return f.cells.classify(u, v, [&]() -> const BRepTopAdaptor_FClass2d& {
+    return *f.classifier;
+  }) == TopAbs_IN;
 }
 
 /// Up to max_seeds points spread over the face's triangles (their order
@@ -83,7 +75,8 @@ std::vector<Point3> from_grid(const FacePatch& f) {
 
 void compute_seeds(CadOracle::Model& m) {
   m.seeds.assign(m.faces.size(), {});
-  const std::size_t max_seeds = std::max(kMaxSeeds, kModelSeeds / std::max<std::size_t>(1, m.faces.size()));
+  const std::size_t max_seeds =
+      std::max(kMaxSeeds, kModelSeeds / std::max<std::size_t>(1, m.faces.size()));
   int thin = 0;
   for (std::size_t i = 0; i < m.faces.size(); ++i) {
     std::vector<Point3> pts = from_tessellation(m, m.faces[i], max_seeds);

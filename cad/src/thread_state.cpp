@@ -43,15 +43,8 @@ OcctFaceIntersector& ThreadState::occt(int i) {
 }
 
 TopAbs_State ThreadState::classify(int i, double u, double v) {
-  switch (model_->faces[i].cells.state_at(u, v)) {
-    case UvState::inside:
-      return TopAbs_IN;
-    case UvState::outside:
-      return TopAbs_OUT;
-    case UvState::boundary:
-      break;
-  }
-  return classifier(i).Perform(gp_Pnt2d(u, v));
+  return model_->faces[i].cells.classify(
+      u, v, [&]() -> const BRepTopAdaptor_FClass2d& { return classifier(i); });
 }
 
 ThreadState& thread_state(const CadOracle::Model& m, std::uint64_t serial) {

@@ -20,6 +20,7 @@
 #pragma once
 
 #include <BRepTopAdaptor_FClass2d.hxx>
+#include <gp_Pnt2d.hxx>
 #include <cstdint>
 #include <vector>
 
@@ -62,6 +63,21 @@ class UvCells {
   /// boundary when one is undecided, else outside. Beyond the box by more than
   /// `box_margin`: outside.
   UvState state_at(double u, double v) const;
+  /// state_at() as the face classifier would answer it; `classifier()` (the
+  /// face's BRepTopAdaptor_FClass2d, perhaps built on demand) is asked only
+  /// where the cells leave the point undecided.
+  template <class Classifier>
+  TopAbs_State classify(double u, double v, Classifier&& classifier) const {
+    switch (state_at(u, v)) {
+      case UvState::inside:
+        return TopAbs_IN;
+      case UvState::outside:
+        return TopAbs_OUT;
+      case UvState::boundary:
+        break;
+    }
+    return classifier().Perform(gp_Pnt2d(u, v));
+  }
   /// Makes node `index` (cell [cu0, cu1] x [cv0, cv1]) a boundary leaf with
   /// these chords, and picks and classifies its reference point.
   void set_boundary_leaf(int index, double cu0, double cu1, double cv0, double cv1,

@@ -20,8 +20,8 @@
 // Then the restricted Delaunay triangulation of each curve D|L_j is exactly the
 // chain of its consecutive ball centres (a point of the curve has negative
 // power to one of its own balls and positive power to every ball that does not
-// contain it, so no other ball's power cell reaches the curve), whatever the angles at which features
-// meet (rule R1 never fires), and every refinement point of rules R3-R5 lies
+// contain it, so no other ball's power cell reaches the curve), whatever the
+// angles at which features meet (rule R1 never fires), and every refinement point of rules R3-R5 lies
 // outside all balls (a point of non-negative power to every vertex), so no
 // later insertion encroaches a curve.
 //

@@ -2,8 +2,8 @@
 // including curves meeting at 30 degrees and tangent curves meeting at a
 // corner, the plan satisfies B1 (consecutive balls overlap), B2 (other balls
 // of a curve and its corners are disjoint, with the margin; balls of unrelated
-// features keep clear of each other's feature) and B3 (chords within twice the edge size and
-// within facet_distance of the curve).
+// features keep clear of each other's feature) and B3 (chords within twice the
+// edge size and within facet_distance of the curve).
 #include <gtest/gtest.h>
 
 #include <algorithm>
