@@ -298,14 +298,6 @@ std::string ProtectionPlanner::name(const BallRef& b) const {
                      : "curve " + curves_[b.curve].c.info.name;
 }
 
-bool ProtectionPlanner::related(const BallRef& a, const BallRef& b) const {
-  if (a.curve >= 0 && b.curve >= 0) return a.curve == b.curve;
-  if (a.curve < 0 && b.curve < 0) return false;
-  const BallRef& q = a.curve < 0 ? a : b;
-  const CurveData& d = curves_[(a.curve < 0 ? b : a).curve];
-  return d.start == q.corner || d.end == q.corner;
-}
-
 double ProtectionPlanner::feature_distance(const BallRef& b, const Point3& x) const {
   if (b.curve < 0) return distance(x, corners_[b.corner].point);
   const CurveData& d = curves_[b.curve];
@@ -403,7 +395,8 @@ bool ProtectionPlanner::separate_balls(bool record) {
               // Unrelated features: overlapping balls are fine while each
               // stays clear of the other's feature; only one that does not shrinks.
               double fb = 1, fo = 1;
-              const bool unrelated = !related(b.ref, o.ref);
+              const bool unrelated = !related_balls(
+                  b.ref, o.ref, [&](int j) -> const CurveInfo& { return curves_[j].c.info; });
               if (unrelated) {
                 fb = feature_distance(o.ref, b.center) / ((1 + kGap) * b.radius);
                 fo = feature_distance(b.ref, o.center) / ((1 + kGap) * o.radius);

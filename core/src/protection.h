@@ -70,6 +70,18 @@ struct BallRef {
   double factor = 0.5;  ///< shrink(): the ball's new size, as a fraction of its size
 };
 
+/// Whether B2 asks balls a and b to be disjoint, rather than only clear of each
+/// other's feature: two balls of one curve, or a corner's ball and a ball of a
+/// curve the corner ends. `info_of(j)` is the CurveInfo of curve index j.
+template <class InfoOf>
+bool related_balls(const BallRef& a, const BallRef& b, InfoOf&& info_of) {
+  if (a.curve >= 0 && b.curve >= 0) return a.curve == b.curve;
+  if (a.curve < 0 && b.curve < 0) return false;
+  const int corner = (a.curve < 0 ? a : b).corner;
+  const CurveInfo& curve = info_of((a.curve < 0 ? b : a).curve);
+  return !curve.closed && (curve.start.value - 1 == corner || curve.end.value - 1 == corner);
+}
+
 struct ProtectionPlan {
   std::vector<CurveProtection> curves;  ///< index = CurveId - 1
   std::vector<double> corner_radius;    ///< index = CornerId - 1
@@ -136,9 +148,6 @@ class ProtectionPlanner {
   void keep_visible(const BallRef& a, const BallRef& b, double dist);
   /// Shrinks balls whose arcs violate (B3); true if any changed.
   bool check_arcs();
-  /// Whether B2 asks a and b to be disjoint: balls of one curve, or a corner
-  /// and a ball of one of its curves.
-  bool related(const BallRef& a, const BallRef& b) const;
   /// Distance from x to ball b's feature near b: the corner itself, or the
   /// arc of its curve between the samples next to it.
   double feature_distance(const BallRef& b, const Point3& x) const;

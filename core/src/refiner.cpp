@@ -113,8 +113,7 @@ void Refiner::insert_initial_points() {
 }
 
 void Refiner::refine(bool stop_on_conflict) {
-  may_shrink_ = stop_on_conflict;
-  if (may_shrink_ && plan_) {
+  if (stop_on_conflict && plan_) {
     // The facets between the balls alone already show most balls that reach
     // a patch their feature does not bound (R3), and most overlaps that stray
     // from the surface: shrink them before any refinement work.

@@ -109,8 +109,8 @@ class Refiner {
   /// A facet of D|S joining the balls of unrelated features (B2 lets those
   /// overlap, and refinement never puts a point inside them) whose centroid
   /// strays beyond the facet distance from the surface along its normal:
-  /// records those balls in conflicts_, so that they shrink (refine(true)
-  /// checks the facets between the balls this way before refining).
+  /// records those balls in conflicts_, so that they shrink. refine(true)
+  /// checks the facets between the balls this way before refining.
   void overlap_conflict(Cell_handle c, int i);
   /// The plan's ball of a weighted vertex.
   BallRef ball_of(const VertexInfo& v) const;
@@ -166,7 +166,6 @@ class Refiner {
   MeshOptions options_;
   const ProtectionPlan* plan_;  ///< null: RR-7912's R1/R2 on the curves
   std::vector<BallRef> conflicts_;
-  bool may_shrink_ = false;  ///< refine(true): the caller shrinks balls found in conflict
   Box3 clip_box_;              ///< oracle box with a margin: rays are clipped to it
   double min_size_sq_;         ///< termination guard (squared)
   double facet_shape_bound_;   ///< 4 sin^2(facet angle): min edge^2 / R^2 below it is bad

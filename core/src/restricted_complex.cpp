@@ -201,35 +201,29 @@ void Refiner::add_conflict(const BallRef& ref) {
 }
 
 void Refiner::overlap_conflict(Cell_handle c, int i) {
-  if (!plan_ || !may_shrink_) return;
-  // Unrelated: two curves, or a corner that does not end the curve.
-  auto unrelated = [&](const VertexInfo& a, const VertexInfo& b) {
-    if (a.dim == FeatureDim::kCurve && b.dim == FeatureDim::kCurve) return a.feature != b.feature;
-    if (a.dim == FeatureDim::kCorner && b.dim == FeatureDim::kCorner) return a.feature != b.feature;
-    const VertexInfo& q = a.dim == FeatureDim::kCorner ? a : b;
-    const CurveInfo& curve = curves_[(a.dim == FeatureDim::kCorner ? b : a).feature - 1].info;
-    return curve.closed || (curve.start.value != q.feature && curve.end.value != q.feature);
-  };
+  auto info_of = [&](int j) -> const CurveInfo& { return curves_[j].info; };
   // The overlapping pairs of unrelated balls among the facet's vertices.
-  std::array<Vertex_handle, 6> pairs;
-  std::array<double, 6> factors;
+  std::array<BallRef, 6> pairs;
   int n = 0;
   for (int x = 1; x < 4; ++x) {
     const Vertex_handle a = c->vertex((i + x) & 3);
     const double wa = a->point().weight();
     if (wa == 0) continue;
+    const BallRef ball_a = ball_of(a->info());
     for (int y = x + 1; y < 4; ++y) {
       const Vertex_handle b = c->vertex((i + y) & 3);
       const double wb = b->point().weight();
-      if (wb == 0 || !unrelated(a->info(), b->info())) continue;
+      if (wb == 0) continue;
+      const BallRef ball_b = ball_of(b->info());
+      if (related_balls(ball_a, ball_b, info_of)) continue;
       const double ra = std::sqrt(wa), rb = std::sqrt(wb);
       const double need = ra + rb + ProtectionPlanner::kGap * std::min(ra, rb);
       const double dist = distance(to_point3(a->point()), to_point3(b->point()));
       if (dist >= need) continue;
       // Down to disjoint at once (B2 for related balls), rather than by halves.
-      factors[n] = factors[n + 1] = std::min(0.5, 0.95 * dist / need);
-      pairs[n++] = a;
-      pairs[n++] = b;
+      pairs[n] = ball_a, pairs[n + 1] = ball_b;
+      pairs[n].factor = pairs[n + 1].factor = std::min(0.5, 0.95 * dist / need);
+      n += 2;
     }
   }
   if (n == 0) return;
@@ -243,11 +237,7 @@ void Refiner::overlap_conflict(Cell_handle c, int i) {
   const Point3 g = (1.0 / 3) * (p[0] + p[1] + p[2]);
   const Point3 reach = (1.5 * criteria_.facet_distance / len) * normal;
   if (oracle_.intersect(g - reach, g + reach)) return;
-  for (int k = 0; k < n; ++k) {
-    BallRef ref = ball_of(pairs[k]->info());
-    ref.factor = factors[k];
-    add_conflict(ref);
-  }
+  for (int k = 0; k < n; ++k) add_conflict(pairs[k]);
 }
 
 bool Refiner::on_patch(const VertexInfo& v, int patch) const {
