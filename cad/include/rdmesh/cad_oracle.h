@@ -37,8 +37,8 @@
 // project() runs Newton from the nearest point of the face's tessellation, and
 // on the face's edge curves when the foot falls outside the face
 // (GeomAPI_ProjectPointOnSurf, then BRepExtrema, when that fails).
-// initial_points() evaluates the true surface at interior points of a coarse
-// BRepMesh tessellation (used only for seeding). Queries are const and
+// initial_points() evaluates the true surface at a few centroids of the face's
+// own (u, v) tessellation that its cells place inside it. Queries are const and
 // thread-safe: OpenCASCADE's stateful adaptors, classifiers and intersectors
 // are kept in per-thread caches.
 //
