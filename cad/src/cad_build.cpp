@@ -146,6 +146,14 @@ void collect_faces(CadOracle::Model& m, TopTools_IndexedMapOfShape& patch_faces)
     if (fp.surface.IsNull()) continue;
     BRepTools::UVBounds(face, fp.u0, fp.u1, fp.v0, fp.v1);
     fp.box = box_of(face, 0);
+    if (GeomAdaptor_Surface(fp.surface).GetType() == GeomAbs_Plane) {
+      // STEP files often give a planar face's edges no (u, v) curve: OpenCASCADE
+      // then projects every edge onto the plane again in each classification
+      // near the boundary. Stored once here instead.
+      for (TopExp_Explorer ex(face, TopAbs_EDGE); ex.More(); ex.Next()) {
+        BRepLib::BuildPCurveForEdgeOnPlane(TopoDS::Edge(ex.Current()), face);
+      }
+    }
     fp.classifier = std::make_unique<BRepTopAdaptor_FClass2d>(face, BRep_Tool::Tolerance(face));
     set_kind(fp);
     fp.outward_of = SubdomainId(first_owner);
