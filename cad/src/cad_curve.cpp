@@ -59,7 +59,8 @@ double EdgeCurve::arc(double t) const {
   t = std::clamp(t, t0_, t1_);
   const int cells = static_cast<int>(cumulative_.size()) - 1;
   const int k = std::clamp(static_cast<int>((t - t0_) / cell_), 0, cells - 1);
-  return cumulative_[k] + speed_integral(t0_ + k * cell_, t);
+  const double start = t0_ + k * cell_;
+  return t <= start ? cumulative_[k] : cumulative_[k] + speed_integral(start, t);
 }
 
 double EdgeCurve::length(double ta, double tb) const { return std::max(0.0, arc(tb) - arc(ta)); }
@@ -68,13 +69,20 @@ double EdgeCurve::parameter_at_length(double ta, double s) const {
   const double target = arc(ta) + s;
   if (target >= cumulative_.back()) return t1_;
   if (s <= 0) return ta;
-  // Bracket in the table, then safeguarded Newton on arc(t) - target.
+  // Bracket in the table, then safeguarded Newton on arc(t) - target from the
+  // linear interpolation in the cell; done within 1e-12 of the curve's length.
   const auto it = std::upper_bound(cumulative_.begin(), cumulative_.end(), target);
-  const int k = std::max(0, static_cast<int>(it - cumulative_.begin()) - 1);
+  const int k = std::clamp(static_cast<int>(it - cumulative_.begin()) - 1, 0,
+                           static_cast<int>(cumulative_.size()) - 2);
   double lo = std::max(ta, t0_ + k * cell_), hi = std::min(t1_, t0_ + (k + 1) * cell_);
-  double t = 0.5 * (lo + hi);
+  const double in_cell = cumulative_[k + 1] - cumulative_[k];
+  double t = in_cell > 0 ? t0_ + (k + std::clamp((target - cumulative_[k]) / in_cell, 0.0, 1.0)) * cell_
+                         : 0.5 * (lo + hi);
+  if (!(t > lo && t < hi)) t = 0.5 * (lo + hi);
+  const double tolerance = 1e-12 * cumulative_.back();
   for (int it2 = 0; it2 < 60; ++it2) {
     const double f = arc(t) - target;
+    if (std::fabs(f) <= tolerance) return t;
     if (f > 0)
       hi = t;
     else
