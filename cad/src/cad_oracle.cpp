@@ -246,6 +246,34 @@ std::optional<Point3> CadOracle::project(const Point3& p, PatchId patch) const {
   }
 }
 
+double CadOracle::distance_to_other_patches(const Point3& p, const std::vector<PatchId>& patches,
+                                            double limit) const {
+  const Model& m = *model_;
+  // The other faces with a candidate box (a triangle's, inflated by its
+  // deviation from the face) within the limit; then their exact closest points.
+  std::vector<int> near;
+  const double limit2 = limit * limit;
+  m.candidate_tree.traverse([&](const Box3& box) { return squared_distance(box, p) < limit2; },
+                            [&](int c) {
+                              const int face = m.candidates[c].face;
+                              const auto is = [face](const auto& x) { return x == face; };
+                              const auto bounds = [face](PatchId q) { return q.value == face + 1; };
+                              if (std::none_of(patches.begin(), patches.end(), bounds) &&
+                                  std::none_of(near.begin(), near.end(), is)) {
+                                near.push_back(face);
+                              }
+                              return true;
+                            });
+  // Newton only: where it does not converge the answer errs towards the limit.
+  double best = limit;
+  try {
+    cad::ThreadState& ts = cad::thread_state(m, serial_);
+    for (int face : near) best = cad::distance_to_face(m, ts, face, p, best);
+  } catch (const Standard_Failure&) {
+  }
+  return best;
+}
+
 double CadOracle::exact_volume(SubdomainId id) const {
   double v = 0;
   try {

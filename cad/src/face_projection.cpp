@@ -116,4 +116,18 @@ std::optional<Point3> project_on_face(const CadOracle::Model& m, ThreadState& ts
   return std::nullopt;
 }
 
+double distance_to_face(const CadOracle::Model& m, ThreadState& ts, int face, const Point3& p,
+                        double limit) {
+  const FacePatch& f = m.faces[face];
+  double u = 0, v = 0;
+  if (!tessellation_guess(m, f, p, u, v)) return limit;
+  const SurfaceFoot foot = newton_foot(ts.surface(face), p, u, v, m.tolerance);
+  if (!foot.converged) return limit;
+  const double d = distance(foot.point, p);
+  if (d >= limit) return limit;
+  if (accepted(ts.classify(face, foot.u, foot.v))) return d;
+  const std::optional<Point3> b = closest_on_boundary(f, p, m.tolerance);
+  return b ? std::min(limit, distance(*b, p)) : limit;
+}
+
 }  // namespace rdmesh::cad

@@ -21,4 +21,12 @@ class ThreadState;
 std::optional<Point3> project_on_face(const CadOracle::Model& m, ThreadState& ts, int face,
                                       const Point3& p);
 
+/// min(limit, distance from p to face `face`), by Newton from the tessellation
+/// only: the surface's foot when it is inside the face, else the boundary
+/// curves. A foot at `limit` or more needs no classification (the face is a
+/// part of its surface); `limit` where Newton does not converge. Throws
+/// Standard_Failure.
+double distance_to_face(const CadOracle::Model& m, ThreadState& ts, int face, const Point3& p,
+                        double limit);
+
 }  // namespace rdmesh::cad

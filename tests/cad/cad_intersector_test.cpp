@@ -5,6 +5,7 @@
 // Skipped when the data directory is absent.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -217,6 +218,43 @@ TEST(CadProject, LandsOnTheFaceAtTheClosestPoint) {
     }
   }
   EXPECT_GT(checked, 100);
+}
+
+// distance_to_other_patches() from points near the curves, skipping the
+// curve's own faces, against the closest point of every other face found by
+// BRepExtrema: never nearer than that (its points lie on the faces), and equal
+// to it nearly always (Newton may miss a face, erring towards the limit).
+TEST(CadOtherPatches, MatchTheNearestOtherFace) {
+  for (const char* file : {"gmsh_Zylkopf.stp", "occtsample_drill.step"}) {
+    const auto oracle = load_shared(file);
+    if (!oracle) GTEST_SKIP() << kStep << " is absent";
+    CadReference ref(*oracle);
+    const double tol = 10 * oracle->tolerance(), diag = oracle->bounding_box().diagonal();
+    const double limit = 0.03 * diag;
+    std::mt19937 rng(11);
+    std::normal_distribution<double> g;
+    int checked = 0, equal = 0, near = 0;
+    for (const CurveInfo& c : oracle->curves()) {
+      if (c.id.value % 3 != 0) continue;  // a third of the curves: the reference is slow
+      const Point3 v{g(rng), g(rng), g(rng)};
+      const Point3 p = oracle->curve(c.id).point(0.5 * (c.t_begin + c.t_end)) + (0.005 * diag / norm(v)) * v;
+      double expected = limit;
+      for (const PatchInfo& patch : oracle->patches()) {
+        if (std::find(c.patches.begin(), c.patches.end(), patch.id) != c.patches.end()) continue;
+        expected = std::min(expected, ref.distance_to_face(p, patch.id));
+      }
+      const double got = oracle->distance_to_other_patches(p, c.patches, limit);
+      EXPECT_GE(got, expected - tol) << file << " near " << c.name;
+      EXPECT_LE(got, limit);
+      equal += std::fabs(got - expected) <= tol;
+      near += expected < limit;
+      ++checked;
+    }
+    std::printf("%s: %d points, %d with another face within the limit, %d equal\n", file, checked,
+                near, equal);
+    EXPECT_GT(near, 5) << file;
+    EXPECT_GE(equal, checked - std::max(1, checked / 50)) << file;
+  }
 }
 
 // Every answer is a function of the query alone: the same segments asked in

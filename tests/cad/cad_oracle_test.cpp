@@ -46,6 +46,29 @@ INSTANTIATE_TEST_SUITE_P(
                       Expected{CadTestShape::sphere, "sphere", 1, 1, 0, 0}),
     [](const auto& info) { return std::string(info.param.name); });
 
+// distance_to_other_patches() on the box [0,10] x [0,20] x [0,30]: from
+// (5, 10, 1) the bottom face is 1 away, the faces x = 0 and x = 10 are 5 away.
+TEST(CadOracle, DistanceToOtherPatchesSkipsTheListedOnes) {
+  const auto oracle = make_cad_test_oracle(CadTestShape::box);
+  const Point3 p{5, 10, 1};
+  std::optional<PatchId> bottom;
+  for (const PatchInfo& patch : oracle->patches()) {
+    const std::optional<Point3> q = oracle->project(p, patch.id);
+    ASSERT_TRUE(q.has_value());
+    if (std::fabs(q->z) < 1e-9 && std::fabs(distance(*q, p) - 1) < 1e-9) bottom = patch.id;
+  }
+  ASSERT_TRUE(bottom.has_value());
+  const double tol = 1e-9;
+  EXPECT_NEAR(oracle->distance_to_other_patches(p, {}, 8), 1, tol);
+  EXPECT_NEAR(oracle->distance_to_other_patches(p, {*bottom}, 8), 5, tol);
+  EXPECT_EQ(oracle->distance_to_other_patches(p, {*bottom}, 3), 3) << "nothing within the limit";
+  std::vector<PatchId> all;
+  for (const PatchInfo& patch : oracle->patches()) all.push_back(patch.id);
+  EXPECT_EQ(oracle->distance_to_other_patches(p, all, 8), 8);
+  // Closest points on a face's boundary: from outside the box, beyond an edge.
+  EXPECT_NEAR(oracle->distance_to_other_patches({-3, 10, -4}, {}, 8), 5, tol);
+}
+
 TEST(CadOracle, TwoBoxesShareAnInterfacePatch) {
   const auto oracle = make_cad_test_oracle(CadTestShape::two_boxes);
   int interfaces = 0;

@@ -88,6 +88,9 @@ class CadOracle final : public DomainOracle {
   std::vector<PatchInfo> patches() const override;
   std::vector<Point3> initial_points(PatchId patch) const override;
   std::optional<Point3> project(const Point3& p, PatchId patch) const override;
+  /// project() onto each other face whose tessellation boxes come within `limit`.
+  double distance_to_other_patches(const Point3& p, const std::vector<PatchId>& patches,
+                                   double limit) const override;
   /// max(1e-9 x box diagonal, largest face/edge tolerance), at most 1e-5 x diagonal.
   double tolerance() const override;
   std::vector<CornerInfo> corners() const override;

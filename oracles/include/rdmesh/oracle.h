@@ -79,6 +79,20 @@ class DomainOracle {
   /// Used to measure the Hausdorff distance of the output, not by refinement.
   virtual std::optional<Point3> project(const Point3& p, PatchId patch) const = 0;
 
+  /// The distance from p to the nearest patch not listed in `patches`, when it
+  /// is below `limit`; `limit` otherwise. The protecting balls' planner asks it
+  /// to keep the ball of a corner or curve off the patches that feature does
+  /// not bound: rule R3 cannot be met where such a patch crosses a ball, and
+  /// refinement would find it late and start again with a smaller ball. The
+  /// default knows nothing and returns `limit` (refinement then finds those
+  /// balls itself); an override may err towards `limit` where it cannot tell.
+  virtual double distance_to_other_patches(const Point3& p, const std::vector<PatchId>& patches,
+                                           double limit) const {
+    (void)p;
+    (void)patches;
+    return limit;
+  }
+
   /// Absolute accuracy of the points returned by intersect(), initial_points() and project().
   virtual double tolerance() const = 0;
 
