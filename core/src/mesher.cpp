@@ -43,7 +43,8 @@ detail::ProtectionPlanner make_planner(const DomainOracle& oracle, const Criteri
   for (const CurveInfo& info : oracle.curves()) curves.push_back({info, &oracle.curve(info.id)});
   const double min_size =
       criteria.min_size > 0 ? criteria.min_size : 1e-4 * oracle.bounding_box().diagonal();
-  return detail::ProtectionPlanner(std::move(curves), oracle.corners(), criteria, min_size);
+  return detail::ProtectionPlanner(std::move(curves), oracle.corners(), criteria, min_size,
+                                   &oracle);
 }
 
 void record_protection(const detail::ProtectionPlan& plan,

@@ -32,14 +32,17 @@ struct Ball {
   Point3 center;
   double radius;
   BallRef ref;
+  bool moved;  ///< since the last separation pass
 };
 
 }  // namespace
 
 ProtectionPlanner::ProtectionPlanner(std::vector<ProtectedCurve> curves,
                                      std::vector<CornerInfo> corners, const Criteria& criteria,
-                                     double min_size)
-    : corners_(std::move(corners)), criteria_(criteria), min_size_(min_size) {
+                                     double min_size, const DomainOracle* oracle)
+    : corners_(std::move(corners)), criteria_(criteria), min_size_(min_size), oracle_(oracle) {
+  corner_clear_.assign(corners_.size(), 0);
+  corner_moved_.assign(corners_.size(), 1);
   // A corner's ball: within the edge size, and well clear of the other corners.
   corner_radius_.resize(corners_.size());
   for (std::size_t q = 0; q < corners_.size(); ++q) {
@@ -148,6 +151,8 @@ void ProtectionPlanner::sample_curve(CurveData& d) {
     return BallSample{t, a, curve.point(t), radius};
   };
   d.samples.clear();
+  d.clear = false;
+  d.moved = true;
   double a0 = 0, a1 = d.length;
   if (!info.closed) {
     const Point3 qs = corners_[d.start].point, qe = corners_[d.end].point;
@@ -221,17 +226,22 @@ bool ProtectionPlanner::shrink_ball(const BallRef& b, double factor) {
     double& r = corner_radius_[b.corner];
     if (factor * r < min_size_) return false;
     r *= factor;
+    corner_clear_[b.corner] = 0;
+    corner_moved_[b.corner] = 1;
     for (CurveData& d : curves_) d.dirty = d.dirty || d.start == b.corner || d.end == b.corner;
     return true;
   }
   CurveData& d = curves_[b.curve];
   const BallSample& s = d.samples[b.index];
   // A cap lower than the caps there now, never below the floor; false when it
-  // would change nothing (the ball is as small as it may get).
-  const double value = std::max(factor * s.radius / kRadiusRatio, 2 * min_size_);
+  // would change nothing (the ball is as small as it may get). A sample's ball
+  // follows the longer of its two steps, so it may exceed the caps at its own
+  // place: the new cap is then a fraction of those.
   double now = HUGE_VAL;
   for (const Cap& cap : d.caps) now = std::min(now, cap.value + kGrowth * std::fabs(cap.arc - s.arc));
-  if (value >= 0.999 * std::min(now, s.radius / kRadiusRatio)) return false;
+  const double size = std::min(now, s.radius / kRadiusRatio);
+  const double value = std::max(factor * size, 2 * min_size_);
+  if (value >= 0.999 * size) return false;
   d.dirty = true;
   d.caps.push_back({s.arc, value});
   return true;
@@ -247,6 +257,7 @@ void ProtectionPlanner::clamp_radius(const BallRef& b, double radius) {
   }
   double& r = corner_radius_[b.corner];
   r = std::min(r, radius);
+  corner_moved_[b.corner] = 1;
   for (CurveData& d : curves_) {  // the corner's copies at curve ends
     if (d.start == b.corner) d.samples.front().radius = r;
     if (d.end == b.corner) d.samples.back().radius = r;
@@ -317,13 +328,15 @@ bool ProtectionPlanner::separate_balls(bool record) {
   // (a closed curve's first sample stands for its repeated last one).
   std::vector<Ball> balls;
   for (std::size_t q = 0; q < corners_.size(); ++q) {
-    balls.push_back({corners_[q].point, corner_radius_[q], BallRef{-1, 0, static_cast<int>(q)}});
+    balls.push_back({corners_[q].point, corner_radius_[q], BallRef{-1, 0, static_cast<int>(q)},
+                     record || corner_moved_[q] != 0});
   }
   for (std::size_t j = 0; j < curves_.size(); ++j) {
     const std::vector<BallSample>& s = curves_[j].samples;
     const std::size_t first = curves_[j].c.info.closed ? 0 : 1;
     for (std::size_t i = first; i + 1 < s.size(); ++i) {
-      balls.push_back({s[i].point, s[i].radius, BallRef{static_cast<int>(j), static_cast<int>(i)}});
+      balls.push_back({s[i].point, s[i].radius, BallRef{static_cast<int>(j), static_cast<int>(i)},
+                       record || curves_[j].moved});
     }
   }
   if (balls.size() < 2) return false;
@@ -388,6 +401,7 @@ bool ProtectionPlanner::separate_balls(bool record) {
               // Same level: each pair once, from its first ball.
               if (level[other] == level[k] && other <= static_cast<int>(k)) continue;
               const Ball& o = balls[other];
+              if (!b.moved && !o.moved) continue;  // tested when one of them last moved
               const double dist = distance(b.center, o.center);
               if (record) keep_visible(b.ref, o.ref, dist);
               const double need = b.radius + o.radius + kGap * std::min(b.radius, o.radius);
@@ -428,10 +442,40 @@ bool ProtectionPlanner::separate_balls(bool record) {
       }
     }
   }
+  std::fill(corner_moved_.begin(), corner_moved_.end(), 0);
+  for (CurveData& d : curves_) d.moved = false;
   if (!conflict || record) return false;
   bool changed = false;
   for (std::size_t k = 0; k < balls.size(); ++k) {
     if (factor[k] < 1) changed = shrink_ball(balls[k].ref, factor[k]) || changed;
+  }
+  return changed;
+}
+
+bool ProtectionPlanner::keep_off_patches() {
+  if (oracle_ == nullptr) return false;
+  bool changed = false;
+  auto keep_off = [&](const BallRef& ref, const Point3& centre, double radius,
+                      const std::vector<PatchId>& patches) {
+    const double reach = kClearance * radius;
+    const double d = oracle_->distance_to_other_patches(centre, patches, reach);
+    if (d < reach) changed = shrink_ball(ref, std::max(0.95 * d / reach, 0.1)) || changed;
+  };
+  for (std::size_t q = 0; q < corners_.size(); ++q) {
+    if (corner_clear_[q]) continue;
+    corner_clear_[q] = 1;
+    keep_off(BallRef{-1, 0, static_cast<int>(q)}, corners_[q].point, corner_radius_[q],
+             corners_[q].patches);
+  }
+  for (std::size_t j = 0; j < curves_.size(); ++j) {
+    CurveData& d = curves_[j];
+    if (d.clear) continue;
+    d.clear = true;
+    const std::size_t first = d.c.info.closed ? 0 : 1;
+    for (std::size_t i = first; i + 1 < d.samples.size(); ++i) {
+      keep_off(BallRef{static_cast<int>(j), static_cast<int>(i)}, d.samples[i].point,
+               d.samples[i].radius, d.c.info.patches);
+    }
   }
   return changed;
 }
@@ -446,6 +490,8 @@ void ProtectionPlanner::resolve() {
     }
     bool changed = check_arcs();
     changed = separate_balls(false) || changed;
+    // The oracle's queries cost more: only once the balls are otherwise fine.
+    if (!changed) changed = keep_off_patches();
     if (!changed) break;
   }
   for (CurveData& d : curves_) {

@@ -34,7 +34,11 @@
 // gradually. Where (B2) or (B3) fails, the balls involved shrink (a cap at a
 // curve sample, a smaller radius at a corner) and the curves are sampled
 // again, until every ball is fine or would fall below the minimum size (then
-// the pair is recorded, like the refinement guard).
+// the pair is recorded, like the refinement guard). Then, when the oracle can
+// tell (DomainOracle::distance_to_other_patches), a ball coming within
+// kClearance radii of a patch its feature does not bound shrinks too (R3
+// could not be met where that patch crosses the ball; refinement would find
+// it late and start again), and the rounds go on until nothing changes.
 #pragma once
 
 #include <string>
@@ -42,6 +46,7 @@
 
 #include "rdmesh/criteria.h"
 #include "rdmesh/curve.h"
+#include "rdmesh/oracle.h"
 
 namespace rdmesh::detail {
 
@@ -105,11 +110,18 @@ class ProtectionPlanner {
   static constexpr double kRadiusRatio = 0.6;
   static constexpr double kOverlap = 0.2;
   static constexpr double kGap = 0.1;
-  static constexpr double kGrowth = 0.25;
+  static constexpr double kGrowth = 0.5;
   static constexpr double kJitter = 0.03;
+  /// A ball keeps the patches its feature does not bound beyond kClearance
+  /// times its radius (the refiner blames a ball for an R3 facet whose surface
+  /// centre lies within sqrt(1.5) < kClearance radii of its centre).
+  static constexpr double kClearance = 1.25;
 
+  /// `oracle`, when given, is asked for the distance from each ball to the
+  /// patches its feature does not bound (DomainOracle::distance_to_other_patches).
   ProtectionPlanner(std::vector<ProtectedCurve> curves, std::vector<CornerInfo> corners,
-                    const Criteria& criteria, double min_size);
+                    const Criteria& criteria, double min_size,
+                    const DomainOracle* oracle = nullptr);
 
   /// Samples every curve and shrinks balls until (B1)-(B3) hold.
   ProtectionPlan plan();
@@ -130,6 +142,8 @@ class ProtectionPlanner {
     std::vector<Cap> caps;
     std::vector<BallSample> samples;
     bool dirty = true;  ///< caps or corner radii changed since the last sampling
+    bool clear = false;  ///< samples checked against the other patches since the last sampling
+    bool moved = true;   ///< sampled again since the last separate_balls()
   };
 
   /// The step size at arc length a of curve j.
@@ -151,9 +165,13 @@ class ProtectionPlanner {
   /// Distance from x to ball b's feature near b: the corner itself, or the
   /// arc of its curve between the samples next to it.
   double feature_distance(const BallRef& b, const Point3& x) const;
-  /// Shrinks balls violating (B2); true if any changed. With `record`, only
-  /// records the violating pairs as unresolved.
+  /// Shrinks balls violating (B2); true if any changed. Only pairs with a ball
+  /// that moved since the last call are tested, but all with `record`, which
+  /// only records the violating pairs as unresolved.
   bool separate_balls(bool record);
+  /// Shrinks balls that come within kClearance radii of a patch their feature
+  /// does not bound (balls not checked since they last changed); true if any changed.
+  bool keep_off_patches();
   void resolve();
   ProtectionPlan result() const;
   std::string name(const BallRef& b) const;
@@ -163,7 +181,10 @@ class ProtectionPlanner {
   std::vector<CornerInfo> corners_;
   Criteria criteria_;
   double min_size_;
+  const DomainOracle* oracle_;
   std::vector<double> corner_radius_;
+  std::vector<char> corner_clear_;  ///< corner checked against the other patches at its radius
+  std::vector<char> corner_moved_;  ///< radius changed since the last separate_balls()
   std::vector<std::string> unresolved_;
   std::size_t unresolved_pairs_ = 0;
 };

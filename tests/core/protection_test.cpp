@@ -13,6 +13,7 @@
 
 #include "protection.h"
 #include "rdmesh/domain_file.h"
+#include "rdmesh/errors.h"
 #include "rdmesh/parametric_curve.h"
 #include "test_domains.h"
 
@@ -243,6 +244,67 @@ TEST(Protection, ShrinkMakesTheBallsAroundASampleSmaller) {
   }
   EXPECT_LE(r, 0.6 * radius) << "the ball there shrank";
   EXPECT_GT(after.balls, before.balls);
+}
+
+/// Only distance_to_other_patches() matters to the planner: patch 2 is the
+/// rectangle [4, 6] x [-1, 1] at height z = 0.3; patch 1 is everything else.
+class RectangleNearby final : public DomainOracle {
+ public:
+  static double distance_to_rectangle(const Point3& p) {
+    const double dx = std::max({4.0 - p.x, 0.0, p.x - 6.0});
+    const double dy = std::max({-1.0 - p.y, 0.0, p.y - 1.0});
+    return std::sqrt(dx * dx + dy * dy + (p.z - 0.3) * (p.z - 0.3));
+  }
+  double distance_to_other_patches(const Point3& p, const std::vector<PatchId>& patches,
+                                   double limit) const override {
+    ++queries;
+    const bool bounds_it = std::find(patches.begin(), patches.end(), PatchId(2)) != patches.end();
+    return bounds_it ? limit : std::min(limit, distance_to_rectangle(p));
+  }
+  Box3 bounding_box() const override { return {{-1, -2, -1}, {11, 2, 1}}; }
+  SubdomainId locate(const Point3&) const override { return kOutside; }
+  std::optional<SurfaceHit> intersect(const Point3&, const Point3&) const override { return {}; }
+  std::vector<SubdomainInfo> subdomains() const override { return {}; }
+  std::vector<PatchInfo> patches() const override { return {}; }
+  std::vector<Point3> initial_points(PatchId) const override { return {}; }
+  std::optional<Point3> project(const Point3&, PatchId) const override { return {}; }
+  double tolerance() const override { return 1e-12; }
+  std::vector<CornerInfo> corners() const override { return {}; }
+  std::vector<CurveInfo> curves() const override { return {}; }
+  const Curve& curve(CurveId) const override { throw OracleError("no curves here"); }
+  mutable int queries = 0;
+};
+
+TEST(Protection, BallsKeepOffPatchesTheirFeatureDoesNotBound) {
+  // A 10-long segment bounding patch 1 only, 0.3 below the middle of patch 2:
+  // with an edge size of 2 its balls would reach 1.2, so near x in [4, 6] they
+  // must shrink to keep patch 2 beyond kClearance radii; far from it they need not.
+  ParametricCurve line([](double t) { return Point3{t, 0, 0}; }, 0, 10);
+  Layout l;
+  l.corners = {{CornerId(1), {0, 0, 0}, {CurveId(1)}, {PatchId(1)}},
+               {CornerId(2), {10, 0, 0}, {CurveId(1)}, {PatchId(1)}}};
+  l.curves = {{CurveInfo{CurveId(1), "line", false, 0, 10, CornerId(1), CornerId(2), {PatchId(1)}},
+               &line}};
+  const Criteria c = test::uniform_criteria(2.0);
+  const RectangleNearby oracle;
+  Planner planner(l.curves, l.corners, c, 1e-4, &oracle);
+  const ProtectionPlan plan = planner.plan();
+  expect_protected(l, plan, c);
+  EXPECT_GT(oracle.queries, 0);
+  double largest = 0;
+  for (const BallSample& b : plan.curves[0].samples) {
+    EXPECT_GE(RectangleNearby::distance_to_rectangle(b.point), Planner::kClearance * b.radius * (1 - 1e-12))
+        << "ball at x = " << b.point.x << " radius " << b.radius;
+    largest = std::max(largest, b.radius);
+  }
+  EXPECT_GT(largest, 0.5) << "balls far from the rectangle stay large";
+  // The same curve bounding patch 2 too: nothing to keep off, the balls stay as planned without it.
+  Layout bounding = l;
+  bounding.curves[0].info.patches.push_back(PatchId(2));
+  const ProtectionPlan free = Planner(bounding.curves, bounding.corners, c, 1e-4, &oracle).plan();
+  const ProtectionPlan without = plan_for(l, c, 1e-4);
+  ASSERT_EQ(free.curves[0].samples.size(), without.curves[0].samples.size());
+  EXPECT_LT(without.curves[0].samples.size(), plan.curves[0].samples.size());
 }
 
 TEST(Protection, CurvesCloserThanTheMinimumSizeAreReported) {
