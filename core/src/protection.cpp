@@ -221,7 +221,7 @@ void ProtectionPlanner::sample_curve(CurveData& d) {
   }
 }
 
-bool ProtectionPlanner::shrink_ball(const BallRef& b, double factor) {
+bool ProtectionPlanner::shrink_ball(const BallRef& b, double factor, bool below_caps) {
   if (b.curve < 0) {
     double& r = corner_radius_[b.corner];
     if (factor * r < min_size_) return false;
@@ -236,12 +236,12 @@ bool ProtectionPlanner::shrink_ball(const BallRef& b, double factor) {
   // A cap lower than the caps there now, never below the floor; false when it
   // would change nothing (the ball is as small as it may get). A sample's ball
   // follows the longer of its two steps, so it may exceed the caps at its own
-  // place: the new cap is then a fraction of those.
+  // place: with below_caps the new cap is a fraction of those.
   double now = HUGE_VAL;
   for (const Cap& cap : d.caps) now = std::min(now, cap.value + kGrowth * std::fabs(cap.arc - s.arc));
-  const double size = std::min(now, s.radius / kRadiusRatio);
-  const double value = std::max(factor * size, 2 * min_size_);
-  if (value >= 0.999 * size) return false;
+  const double size = s.radius / kRadiusRatio;
+  const double value = std::max(factor * (below_caps ? std::min(now, size) : size), 2 * min_size_);
+  if (value >= 0.999 * std::min(now, size)) return false;
   d.dirty = true;
   d.caps.push_back({s.arc, value});
   return true;
@@ -459,7 +459,11 @@ bool ProtectionPlanner::keep_off_patches() {
                       const std::vector<PatchId>& patches) {
     const double reach = kClearance * radius;
     const double d = oracle_->distance_to_other_patches(centre, patches, reach);
-    if (d < reach) changed = shrink_ball(ref, std::max(0.95 * d / reach, 0.1)) || changed;
+    // A patch within a few minimum sizes of the feature cannot be kept off (the
+    // ball would reach the floor): refinement and its guard deal with it.
+    if (d < reach && d >= kClearance * 4 * min_size_) {
+      changed = shrink_ball(ref, std::max(0.95 * d / reach, 0.1), true) || changed;
+    }
   };
   for (std::size_t q = 0; q < corners_.size(); ++q) {
     if (corner_clear_[q]) continue;

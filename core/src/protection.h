@@ -152,8 +152,9 @@ class ProtectionPlanner {
   /// (from_end: around its end, measured from the end).
   double exit_arc(const CurveData& d, const Point3& q, double r, bool from_end) const;
   void sample_curve(CurveData& d);
-  /// Shrinks ball b to `factor` of its size; false when it is at the minimum.
-  bool shrink_ball(const BallRef& b, double factor);
+  /// Shrinks ball b to `factor` of its size (with `below_caps`, of the caps at
+  /// its place when they are lower); false when it is at the minimum.
+  bool shrink_ball(const BallRef& b, double factor, bool below_caps = false);
   /// Caps the radius of ball b in the final samples (no resampling).
   void clamp_radius(const BallRef& b, double radius);
   double radius_of(const BallRef& b) const;
