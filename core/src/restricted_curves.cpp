@@ -7,6 +7,10 @@
 //   R2  r > edge_size(c), or the chord pq is farther than facet_distance from
 //       c: refine-edge.
 // refine-edge inserts c, on the true curve.
+#include <CGAL/Spatial_sort_traits_adapter_3.h>
+#include <CGAL/property_map.h>
+#include <CGAL/spatial_sort.h>
+
 #include <algorithm>
 #include <limits>
 
@@ -85,54 +89,80 @@ void Refiner::insert_corners_and_curve_samples() {
 }
 
 void Refiner::insert_protecting_balls() {
+  // Every ball once (a corner's ball for all its curves, a closed curve's first
+  // sample for its repeated last one), inserted in spatial order: the
+  // triangulation does not depend on the order, the walks from one insertion
+  // to the next become short.
+  struct Ball {
+    Point3 point;
+    double radius;
+    FeatureDim dim;
+    int feature;
+    double t;
+  };
+  std::vector<Ball> balls;
+  for (std::size_t q = 0; q < corners_.size(); ++q) {
+    balls.push_back({corners_[q].point, plan_->corner_radius[q], FeatureDim::kCorner,
+                     static_cast<int>(q) + 1, 0});
+  }
+  std::vector<std::size_t> first_ball(curves_.size());  // of each curve's own balls
+  for (std::size_t j = 0; j < curves_.size(); ++j) {
+    const std::vector<BallSample>& s = plan_->curves[j].samples;
+    first_ball[j] = balls.size();
+    const std::size_t from = curves_[j].info.closed ? 0 : 1;
+    for (std::size_t i = from; i + 1 < s.size(); ++i) {
+      balls.push_back({s[i].point, s[i].radius, FeatureDim::kCurve, static_cast<int>(j) + 1, s[i].t});
+    }
+  }
+  std::vector<Kernel::Point_3> points;
+  for (const Ball& b : balls) points.emplace_back(b.point.x, b.point.y, b.point.z);
+  std::vector<std::size_t> order(balls.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  using SortTraits =
+      CGAL::Spatial_sort_traits_adapter_3<Kernel, CGAL::Pointer_property_map<Kernel::Point_3>::type>;
+  CGAL::spatial_sort(order.begin(), order.end(), SortTraits(CGAL::make_property_map(points)));
+
+  std::vector<Vertex_handle> vertex(balls.size());
   Cell_handle hint;
-  std::size_t inserted = 0;
-  auto insert = [&](const Point3& p, double radius, FeatureDim dim, int feature, double t) {
+  for (const std::size_t k : order) {
+    const Ball& b = balls[k];
     const Vertex_handle v =
-        tr_.insert(Weighted_point(Kernel::Point_3(p.x, p.y, p.z), radius * radius), hint);
+        tr_.insert(Weighted_point(points[k], b.radius * b.radius), hint);
     if (v == Vertex_handle() || v->info().dim != FeatureDim::kVolume) {
-      throw InternalError("protecting ball at (" + std::to_string(p.x) + ", " +
-                          std::to_string(p.y) + ", " + std::to_string(p.z) +
+      throw InternalError("protecting ball at (" + std::to_string(b.point.x) + ", " +
+                          std::to_string(b.point.y) + ", " + std::to_string(b.point.z) +
                           ") is hidden by another or coincides with it");
     }
-    v->info().dim = dim;
-    v->info().feature = feature;
-    v->info().t = t;
-    v->info().ball_weight = radius * radius;
+    v->info().dim = b.dim;
+    v->info().feature = b.feature;
+    v->info().t = b.t;
+    v->info().ball_weight = b.radius * b.radius;
     hint = v->cell();
-    ++inserted;
-    return v;
-  };
-  std::vector<Vertex_handle> corner_vertex(corners_.size());
-  for (std::size_t q = 0; q < corners_.size(); ++q) {
-    corner_vertex[q] = insert(corners_[q].point, plan_->corner_radius[q], FeatureDim::kCorner,
-                              static_cast<int>(q) + 1, 0);
+    vertex[k] = v;
   }
   for (std::size_t j = 0; j < curves_.size(); ++j) {
     CurveState& c = curves_[j];
-    const std::vector<BallSample>& balls = plan_->curves[j].samples;
-    const int id = static_cast<int>(j) + 1;
-    Vertex_handle first;
-    for (std::size_t i = 0; i < balls.size(); ++i) {
-      const BallSample& b = balls[i];
+    const std::vector<BallSample>& s = plan_->curves[j].samples;
+    for (std::size_t i = 0; i < s.size(); ++i) {
       Vertex_handle v;
-      if (i == 0) {
-        v = first = c.info.closed ? insert(b.point, b.radius, FeatureDim::kCurve, id, b.t)
-                                  : corner_vertex[c.info.start.value - 1];
-      } else if (i + 1 == balls.size()) {
-        v = c.info.closed ? first : corner_vertex[c.info.end.value - 1];
+      if (c.info.closed) {
+        v = vertex[first_ball[j] + (i + 1 == s.size() ? 0 : i)];
+      } else if (i == 0) {
+        v = vertex[c.info.start.value - 1];
+      } else if (i + 1 == s.size()) {
+        v = vertex[c.info.end.value - 1];
       } else {
-        v = insert(b.point, b.radius, FeatureDim::kCurve, id, b.t);
+        v = vertex[first_ball[j] + i - 1];
       }
-      c.samples[b.t] = CurveSample{v, to_point3(v->point())};
+      c.samples[s[i].t] = CurveSample{v, to_point3(v->point())};
     }
   }
   // A vertex hidden by a later ball would vanish from the triangulation.
-  if (tr_.number_of_vertices() != inserted) {
-    throw InternalError("protecting balls hide one another (" + std::to_string(inserted) +
+  if (tr_.number_of_vertices() != balls.size()) {
+    throw InternalError("protecting balls hide one another (" + std::to_string(balls.size()) +
                         " inserted, " + std::to_string(tr_.number_of_vertices()) + " remain)");
   }
-  stats_.initial_points += inserted;
+  stats_.initial_points += balls.size();
 }
 
 ChainEdges Refiner::chain_edges() const {
