@@ -368,21 +368,28 @@ bool ProtectionPlanner::separate_balls(bool record) {
     return (static_cast<std::uint64_t>(x & 0x1fffff) << 42) |
            (static_cast<std::uint64_t>(y & 0x1fffff) << 21) | static_cast<std::uint64_t>(z & 0x1fffff);
   };
+  // Two grids: every ball, and the balls that moved. A moved ball looks for
+  // partners among all, an unmoved one among the moved only: each pair with a
+  // moved ball is still seen once (from its smaller ball, or from its first
+  // one at the same level), a pair of unmoved balls is not looked at.
+  using Grid = std::map<int, std::unordered_map<std::uint64_t, std::vector<int>>>;
   std::vector<int> level(balls.size());
-  std::map<int, std::unordered_map<std::uint64_t, std::vector<int>>> grids;
+  Grid all, moved;
   for (std::size_t k = 0; k < balls.size(); ++k) {
     level[k] = level_of(balls[k].radius);
     const double cell = std::ldexp(base, level[k]);
     const Point3& c = balls[k].center;
-    grids[level[k]][key(static_cast<std::int64_t>(std::floor(c.x / cell)),
-                        static_cast<std::int64_t>(std::floor(c.y / cell)),
-                        static_cast<std::int64_t>(std::floor(c.z / cell)))]
-        .push_back(static_cast<int>(k));
+    const std::uint64_t where = key(static_cast<std::int64_t>(std::floor(c.x / cell)),
+                                    static_cast<std::int64_t>(std::floor(c.y / cell)),
+                                    static_cast<std::int64_t>(std::floor(c.z / cell)));
+    all[level[k]][where].push_back(static_cast<int>(k));
+    if (balls[k].moved) moved[level[k]][where].push_back(static_cast<int>(k));
   }
   std::vector<double> factor(balls.size(), 1.0);
   bool conflict = false;
   for (std::size_t k = 0; k < balls.size(); ++k) {
     const Ball& b = balls[k];
+    const Grid& grids = b.moved ? all : moved;
     for (auto g = grids.lower_bound(level[k]); g != grids.end(); ++g) {
       const double cell = std::ldexp(base, g->first);
       const double reach = (1 + kGap) * b.radius + 0.5 * cell;
@@ -401,7 +408,6 @@ bool ProtectionPlanner::separate_balls(bool record) {
               // Same level: each pair once, from its first ball.
               if (level[other] == level[k] && other <= static_cast<int>(k)) continue;
               const Ball& o = balls[other];
-              if (!b.moved && !o.moved) continue;  // tested when one of them last moved
               const double dist = distance(b.center, o.center);
               if (record) keep_visible(b.ref, o.ref, dist);
               const double need = b.radius + o.radius + kGap * std::min(b.radius, o.radius);
