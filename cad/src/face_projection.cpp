@@ -91,20 +91,31 @@ std::optional<Point3> closest_on_boundary(const FacePatch& f, const Point3& p, d
   return best;
 }
 
+// Newton from the nearest point of the face's tessellation: the surface's foot
+// when the face holds it, else the nearest point of the face's boundary curves;
+// nullopt without a seed, when Newton fails, or when the foot is outside and the
+// face has no boundary curves. A foot at `beyond` or farther from p is returned
+// unclassified: the face is a part of its surface, so none of it is nearer.
+std::optional<Point3> newton_closest(const CadOracle::Model& m, ThreadState& ts, int face,
+                                     const Point3& p, double beyond) {
+  const FacePatch& f = m.faces[face];
+  double u = 0, v = 0;
+  if (!tessellation_guess(m, f, p, u, v)) return std::nullopt;
+  const SurfaceFoot foot = newton_foot(ts.surface(face), p, u, v, m.tolerance);
+  if (!foot.converged) return std::nullopt;
+  if (distance(foot.point, p) >= beyond) return foot.point;
+  if (accepted(ts.classify(face, foot.u, foot.v))) return foot.point;
+  // The foot is outside the trimmed face: the closest point is on its boundary.
+  return closest_on_boundary(f, p, m.tolerance);
+}
+
 }  // namespace
 
 std::optional<Point3> project_on_face(const CadOracle::Model& m, ThreadState& ts, int face,
                                       const Point3& p) {
+  if (std::optional<Point3> x = newton_closest(m, ts, face, p, HUGE_VAL)) return x;
   const FacePatch& f = m.faces[face];
   double u = 0, v = 0;
-  if (tessellation_guess(m, f, p, u, v)) {
-    const SurfaceFoot foot = newton_foot(ts.surface(face), p, u, v, m.tolerance);
-    if (foot.converged) {
-      if (accepted(ts.classify(face, foot.u, foot.v))) return foot.point;
-      // The foot is outside the trimmed face: the closest point is on its boundary.
-      if (std::optional<Point3> b = closest_on_boundary(f, p, m.tolerance)) return b;
-    }
-  }
   GeomAPI_ProjectPointOnSurf proj(to_gp(p), f.surface, f.u0, f.u1, f.v0, f.v1);
   if (proj.NbPoints() > 0) {
     proj.LowerDistanceParameters(u, v);
@@ -118,16 +129,8 @@ std::optional<Point3> project_on_face(const CadOracle::Model& m, ThreadState& ts
 
 double distance_to_face(const CadOracle::Model& m, ThreadState& ts, int face, const Point3& p,
                         double limit) {
-  const FacePatch& f = m.faces[face];
-  double u = 0, v = 0;
-  if (!tessellation_guess(m, f, p, u, v)) return limit;
-  const SurfaceFoot foot = newton_foot(ts.surface(face), p, u, v, m.tolerance);
-  if (!foot.converged) return limit;
-  const double d = distance(foot.point, p);
-  if (d >= limit) return limit;
-  if (accepted(ts.classify(face, foot.u, foot.v))) return d;
-  const std::optional<Point3> b = closest_on_boundary(f, p, m.tolerance);
-  return b ? std::min(limit, distance(*b, p)) : limit;
+  const std::optional<Point3> x = newton_closest(m, ts, face, p, limit);
+  return x ? std::min(limit, distance(*x, p)) : limit;
 }
 
 }  // namespace rdmesh::cad

@@ -410,7 +410,7 @@ bool ProtectionPlanner::separate_balls(bool record) {
               const Ball& o = balls[other];
               const double dist = distance(b.center, o.center);
               if (record) keep_visible(b.ref, o.ref, dist);
-              const double need = b.radius + o.radius + kGap * std::min(b.radius, o.radius);
+              const double need = disjoint_distance(b.radius, o.radius);
               if (dist >= need || adjacent(b.ref, o.ref)) continue;
               // Unrelated features: overlapping balls are fine while each
               // stays clear of the other's feature; only one that does not shrinks.

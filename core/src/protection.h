@@ -41,6 +41,7 @@
 // it late and start again), and the rounds go on until nothing changes.
 #pragma once
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -116,6 +117,10 @@ class ProtectionPlanner {
   /// times its radius (the refiner blames a ball for an R3 facet whose surface
   /// centre lies within sqrt(1.5) < kClearance radii of its centre).
   static constexpr double kClearance = 1.25;
+  /// The distance B2 asks between the centres of two disjoint balls.
+  static double disjoint_distance(double ra, double rb) {
+    return ra + rb + kGap * std::min(ra, rb);
+  }
 
   /// `oracle`, when given, is asked for the distance from each ball to the
   /// patches its feature does not bound (DomainOracle::distance_to_other_patches).

@@ -217,7 +217,7 @@ void Refiner::overlap_conflict(Cell_handle c, int i) {
       const BallRef ball_b = ball_of(b->info());
       if (related_balls(ball_a, ball_b, info_of)) continue;
       const double ra = std::sqrt(wa), rb = std::sqrt(wb);
-      const double need = ra + rb + ProtectionPlanner::kGap * std::min(ra, rb);
+      const double need = ProtectionPlanner::disjoint_distance(ra, rb);
       const double dist = distance(to_point3(a->point()), to_point3(b->point()));
       if (dist >= need) continue;
       // Down to disjoint at once (B2 for related balls), rather than by halves.
