@@ -90,9 +90,10 @@ void Refiner::insert_corners_and_curve_samples() {
 
 void Refiner::insert_protecting_balls() {
   // Every ball once (a corner's ball for all its curves, a closed curve's first
-  // sample for its repeated last one), inserted in spatial order: the
-  // triangulation does not depend on the order, the walks from one insertion
-  // to the next become short.
+  // sample for its repeated last one), inserted in spatial order: the walks
+  // from one insertion to the next become short. The regular triangulation
+  // does not depend on the order; the creation order of its cells, which
+  // refinement follows on ties, does.
   struct Ball {
     Point3 point;
     double radius;
