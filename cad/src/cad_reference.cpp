@@ -2,6 +2,8 @@
 #include "rdmesh/cad_reference.h"
 
 #include <BRepAdaptor_Curve2d.hxx>
+#include <Geom2dAPI_ProjectPointOnCurve.hxx>
+#include <Geom2d_Curve.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
 #include <BRep_Tool.hxx>
@@ -11,6 +13,7 @@
 #include <TopoDS.hxx>
 #include <gp_Lin.hxx>
 #include <gp_Pnt2d.hxx>
+#include <gp_Vec2d.hxx>
 #include <limits>
 #include <random>
 
@@ -156,6 +159,77 @@ CadReference::CellCheck CadReference::check_cells(int per_face, unsigned seed) {
     }
   } catch (const Standard_Failure& e) {
     throw OracleError("OpenCASCADE failed in CadReference::check_cells: " + cad::describe(e));
+  }
+  return out;
+}
+
+CadReference::CellCheck CadReference::check_cells_near_pcurves(int per_face, unsigned seed) {
+  const CadOracle::Model& m = *impl_->model;
+  CellCheck out;
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  struct Pcurve {
+    Handle(Geom2d_Curve) curve;
+    double t0, t1;
+    double sense;  // +1 when the face's boundary runs along increasing t
+    bool seam;
+  };
+  try {
+    for (const cad::FacePatch& f : m.faces) {
+      // Edge orientations as seen from the face taken FORWARD: the face lies
+      // left of its boundary's direction in (u, v).
+      const TopoDS_Face face = TopoDS::Face(f.face.Oriented(TopAbs_FORWARD));
+      std::vector<Pcurve> pcurves;
+      for (TopExp_Explorer ex(face, TopAbs_EDGE); ex.More(); ex.Next()) {
+        const TopoDS_Edge& e = TopoDS::Edge(ex.Current());
+        if (BRep_Tool::Degenerated(e)) continue;
+        Pcurve pc;
+        pc.curve = BRep_Tool::CurveOnSurface(e, face, pc.t0, pc.t1);
+        if (pc.curve.IsNull() || !(pc.t1 > pc.t0)) continue;
+        pc.sense = e.Orientation() == TopAbs_REVERSED ? -1 : 1;
+        pc.seam = BRep_Tool::IsClosed(e, face);
+        pcurves.push_back(pc);
+      }
+      if (pcurves.empty()) continue;
+      const double size = std::hypot(f.u1 - f.u0, f.v1 - f.v0);
+      for (int k = 0; k < per_face; ++k) {
+        const Pcurve& pc = pcurves[static_cast<std::size_t>(k) % pcurves.size()];
+        gp_Pnt2d q;
+        gp_Vec2d t;
+        pc.curve->D1(pc.t0 + (0.05 + 0.9 * uniform(rng)) * (pc.t1 - pc.t0), q, t);
+        if (!(t.Magnitude() > 0)) continue;
+        const double offset = std::pow(10.0, -7 + 5 * uniform(rng)) * size;
+        const double side = uniform(rng) < 0.5 ? -1 : 1;
+        const gp_Vec2d n = gp_Vec2d(-t.Y(), t.X()).Normalized();
+        const gp_Pnt2d p(q.X() + side * offset * n.X(), q.Y() + side * offset * n.Y());
+        // The nearest boundary point over every pcurve.
+        double best = std::numeric_limits<double>::infinity(), best_t = 0;
+        const Pcurve* nearest = nullptr;
+        for (const Pcurve& c : pcurves) {
+          Geom2dAPI_ProjectPointOnCurve proj(p, c.curve, c.t0, c.t1);
+          for (int i = 1; i <= proj.NbPoints(); ++i) {
+            if (proj.Distance(i) < best) best = proj.Distance(i), best_t = proj.Parameter(i), nearest = &c;
+          }
+          for (double end : {c.t0, c.t1}) {  // a vertex nearer than any interior foot
+            if (c.curve->Value(end).Distance(p) < best) best = c.curve->Value(end).Distance(p), nearest = nullptr;
+          }
+        }
+        if (!nearest || nearest->seam) continue;
+        const double span = nearest->t1 - nearest->t0;
+        if (best_t - nearest->t0 < 1e-6 * span || nearest->t1 - best_t < 1e-6 * span) continue;
+        const cad::UvState mine = f.cells.state_at(p.X(), p.Y());
+        if (mine == cad::UvState::boundary) continue;
+        gp_Pnt2d foot;
+        gp_Vec2d dir;
+        nearest->curve->D1(best_t, foot, dir);
+        const double left = nearest->sense * (dir.X() * (p.Y() - foot.Y()) - dir.Y() * (p.X() - foot.X()));
+        ++out.compared;
+        out.disagree += (mine == cad::UvState::inside) != (left > 0);
+      }
+    }
+  } catch (const Standard_Failure& e) {
+    throw OracleError("OpenCASCADE failed in CadReference::check_cells_near_pcurves: " +
+                      cad::describe(e));
   }
   return out;
 }

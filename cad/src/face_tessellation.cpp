@@ -99,7 +99,7 @@ class Builder {
       : f_(f), face_(face), s_(s), size_(size), out_(out) {
     planar_ = f.kind == SurfaceKind::plane;
     face_size_ = f.box.diagonal();
-    f.cells.segments = boundary_segments(f);
+    boundary_segments(f, f.cells.segments, f.cells.fine);
     for (const UvSegment& seg : f.cells.segments) {
       f.cells.box_margin = std::max(f.cells.box_margin, seg.reach);
     }

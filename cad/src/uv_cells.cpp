@@ -9,6 +9,7 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Edge.hxx>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <gp_Pnt2d.hxx>
 
@@ -18,18 +19,21 @@ namespace rdmesh::cad {
 namespace {
 
 // Each pcurve cut until the chord strays less than `eps` from its midpoint
-// sample; reach = twice that sagitta (the margin is added later).
+// sample; reach = twice that sagitta (the margin is added later). The chords'
+// parameter ranges go to `ranges` when given.
 void add_chords(const BRepAdaptor_Curve2d& c, double ta, double tb, const gp_Pnt2d& pa,
-                const gp_Pnt2d& pb, int depth, double eps, std::vector<UvSegment>& out) {
+                const gp_Pnt2d& pb, int depth, double eps, std::vector<UvSegment>& out,
+                std::vector<std::array<double, 2>>* ranges) {
   const double tm = 0.5 * (ta + tb);
   const gp_Pnt2d pm = c.Value(tm);
   const double sag = pm.Distance(gp_Pnt2d(0.5 * (pa.X() + pb.X()), 0.5 * (pa.Y() + pb.Y())));
   if (sag > eps && depth < 12) {
-    add_chords(c, ta, tm, pa, pm, depth + 1, eps, out);
-    add_chords(c, tm, tb, pm, pb, depth + 1, eps, out);
+    add_chords(c, ta, tm, pa, pm, depth + 1, eps, out, ranges);
+    add_chords(c, tm, tb, pm, pb, depth + 1, eps, out, ranges);
     return;
   }
   out.push_back({pa.X(), pa.Y(), pb.X(), pb.Y(), 2 * sag});
+  if (ranges) ranges->push_back({ta, tb});
 }
 
 double point_segment(double u, double v, const UvSegment& s) {
@@ -44,23 +48,15 @@ double orient(double au, double av, double bu, double bv, double cu, double cv) 
   return (bu - au) * (cv - av) - (bv - av) * (cu - au);
 }
 
-// Sagitta of the polygon OpenCASCADE's face classifier puts through pcurve c
-// (4 x NbSamples points, uniform in the parameter): the half-width of its band
-// where it defers to BRepClass_FaceClassifier.
-double classifier_sagitta(const BRepAdaptor_Curve2d& c) {
-  int n = Geom2dInt_Geom2dCurveTool::NbSamples(c);
-  if (n > 2) n *= 4;
-  n = std::clamp(n, 2, 2000);
-  const double t0 = c.FirstParameter(), dt = (c.LastParameter() - t0) / (n - 1);
-  double sag = 0;
-  gp_Pnt2d prev = c.Value(t0);
-  for (int k = 1; k < n; ++k) {
-    const gp_Pnt2d next = c.Value(t0 + k * dt), mid = c.Value(t0 + (k - 0.5) * dt);
-    sag = std::max(
-        sag, mid.Distance(gp_Pnt2d(0.5 * (prev.X() + next.X()), 0.5 * (prev.Y() + next.Y()))));
-    prev = next;
-  }
-  return sag;
+// Whether segment [(ru, rv), (u, v)] crosses chord s (1) or not (0), or passes
+// within `eps` (an orientation) of one of its ends, where parity is undecided (-1).
+int crossing(const UvSegment& s, double ru, double rv, double u, double v, double eps) {
+  const double o1 = orient(s.au, s.av, s.bu, s.bv, ru, rv);
+  const double o2 = orient(s.au, s.av, s.bu, s.bv, u, v);
+  const double o3 = orient(ru, rv, u, v, s.au, s.av);
+  const double o4 = orient(ru, rv, u, v, s.bu, s.bv);
+  if (std::fabs(o3) <= eps || std::fabs(o4) <= eps) return -1;
+  return (o1 > 0) != (o2 > 0) && (o3 > 0) != (o4 > 0) ? 1 : 0;
 }
 
 // How far in (u, v) a 3D distance `d` can reach at (u, v): d over the smallest
@@ -76,18 +72,19 @@ double uv_reach(const GeomAdaptor_Surface& s, double u, double v, double d, doub
 
 }  // namespace
 
-std::vector<UvSegment> boundary_segments(const FacePatch& f) {
-  std::vector<UvSegment> out;
-  std::vector<double> edge_tolerance;  // per chord
+void boundary_segments(const FacePatch& f, std::vector<UvSegment>& out,
+                       std::vector<UvSegment>& fine) {
+  out.clear();
+  fine.clear();
+  std::vector<double> edge_tolerance, fine_tolerance;  // per chord
+  std::vector<std::array<double, 2>> ranges;           // per chord of the edge at hand
   std::vector<gp_Pnt2d> ends;
   const double uv_size = std::hypot(f.u1 - f.u0, f.v1 - f.v0);
-  const double eps = 1e-4 * uv_size;
+  const double eps = 1e-4 * uv_size, fine_eps = 1e-5 * uv_size;
   const double face_tolerance = BRep_Tool::Tolerance(f.face);
-  double band = face_tolerance;  // the classifier's band (at least its tolerance)
   for (TopExp_Explorer ex(f.face, TopAbs_EDGE); ex.More(); ex.Next()) {
     const TopoDS_Edge& edge = TopoDS::Edge(ex.Current());
     const BRepAdaptor_Curve2d c(edge, f.face);
-    band = std::max(band, classifier_sagitta(c));
     // Start at least as densely as the face classifier samples the pcurve (and
     // four points per C2 piece): a narrow excursion of a poorly approximated
     // pcurve between samples would be missed by the sagitta test alone.
@@ -97,14 +94,27 @@ std::vector<UvSegment> boundary_segments(const FacePatch& f) {
         4000);
     gp_Pnt2d prev = c.Value(t0);
     ends.push_back(prev);
+    const std::size_t first = out.size();
+    ranges.clear();
     for (int k = 1; k <= kStart; ++k) {
       const double ta = t0 + (t1 - t0) * (k - 1) / kStart, tb = t0 + (t1 - t0) * k / kStart;
       const gp_Pnt2d next = c.Value(tb);
-      add_chords(c, ta, tb, prev, next, 0, eps, out);
+      add_chords(c, ta, tb, prev, next, 0, eps, out, &ranges);
       prev = next;
     }
     ends.push_back(prev);
+    // Each chord's finer chords, for the points of its tube.
+    for (std::size_t i = first; i < out.size(); ++i) {
+      UvSegment& s = out[i];
+      if (!(s.reach > 2 * fine_eps)) continue;  // as fine already
+      const std::array<double, 2>& r = ranges[i - first];
+      s.fine_first = static_cast<int>(fine.size());
+      add_chords(c, r[0], r[1], gp_Pnt2d(s.au, s.av), gp_Pnt2d(s.bu, s.bv), 0, fine_eps, fine,
+                 nullptr);
+      s.fine_count = static_cast<int>(fine.size()) - s.fine_first;
+    }
     edge_tolerance.resize(out.size(), BRep_Tool::Tolerance(edge));
+    fine_tolerance.resize(fine.size(), BRep_Tool::Tolerance(edge));
   }
   // Consecutive pcurves meet only within their vertex tolerance: the widest gap
   // between an end and the nearest other end joins every reach.
@@ -119,14 +129,16 @@ std::vector<UvSegment> boundary_segments(const FacePatch& f) {
   // Near the boundary the classifier answers with the edges' 3D tolerances:
   // each chord's tube also holds its edge's tolerance, carried into (u, v).
   const GeomAdaptor_Surface surface(f.surface);
-  const double margin = 1e-7 * uv_size + 2 * band + gap;
-  for (std::size_t i = 0; i < out.size(); ++i) {
-    UvSegment& s = out[i];
+  // The face classifier is built with the face's tolerance as its (u, v)
+  // tolerance: within it of the boundary it may answer ON.
+  const double margin = 1e-7 * uv_size + 2 * face_tolerance + gap;
+  auto widen = [&](UvSegment& s, double edge_tol) {
     const double um = 0.5 * (s.au + s.bu), vm = 0.5 * (s.av + s.bv);
-    const double tolerance = std::max(edge_tolerance[i], face_tolerance);
+    const double tolerance = std::max(edge_tol, face_tolerance);
     s.reach += margin + 2 * uv_reach(surface, um, vm, tolerance, 0.05 * uv_size);
-  }
-  return out;
+  };
+  for (std::size_t i = 0; i < out.size(); ++i) widen(out[i], edge_tolerance[i]);
+  for (std::size_t i = 0; i < fine.size(); ++i) widen(fine[i], fine_tolerance[i]);
 }
 
 UvState UvCells::state_at(double u, double v) const {
@@ -169,16 +181,27 @@ UvState UvCells::resolve(const Node& leaf, double u, double v) const {
   bool inside = leaf.reference_inside;
   const double ru = leaf.ref_u, rv = leaf.ref_v;
   const double scale = std::max(u1 - u0, v1 - v0);
+  const double eps = 1e-12 * scale * scale;
   for (int k = leaf.first; k < leaf.first + leaf.count; ++k) {
     const UvSegment& s = segments[segment_refs[k]];
-    if (point_segment(u, v, s) <= s.reach) return UvState::boundary;  // in a tube
-    const double o1 = orient(s.au, s.av, s.bu, s.bv, ru, rv);
-    const double o2 = orient(s.au, s.av, s.bu, s.bv, u, v);
-    const double o3 = orient(ru, rv, u, v, s.au, s.av);
-    const double o4 = orient(ru, rv, u, v, s.bu, s.bv);
-    const double eps = 1e-12 * scale * scale;
-    if (std::fabs(o3) <= eps || std::fabs(o4) <= eps) return UvState::boundary;  // through an end
-    if ((o1 > 0) != (o2 > 0) && (o3 > 0) != (o4 > 0)) inside = !inside;
+    if (point_segment(u, v, s) > s.reach) {
+      const int x = crossing(s, ru, rv, u, v, eps);
+      if (x < 0) return UvState::boundary;  // through a chord's end
+      inside = inside != (x == 1);
+      continue;
+    }
+    // In the chord's tube: its finer chords (same ends) decide, unless the
+    // point, or the reference, lies in one of their tubes.
+    if (s.fine_count == 0) return UvState::boundary;
+    for (int j = s.fine_first; j < s.fine_first + s.fine_count; ++j) {
+      const UvSegment& t = fine[j];
+      if (point_segment(u, v, t) <= t.reach || point_segment(ru, rv, t) <= t.reach) {
+        return UvState::boundary;
+      }
+      const int x = crossing(t, ru, rv, u, v, eps);
+      if (x < 0) return UvState::boundary;
+      inside = inside != (x == 1);
+    }
   }
   return inside ? UvState::inside : UvState::outside;
 }

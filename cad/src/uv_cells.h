@@ -4,10 +4,11 @@
 // The face's boundary is its pcurves, cut into chords until each strays from
 // its chord by little; each chord carries a reach: twice the sampled sagitta,
 // plus a margin, the widest gap between consecutive pcurves, and the band in
-// which OpenCASCADE's face classifier answers with tolerances (twice its own
-// polygon's sagitta, and the edge's 3D tolerance carried into (u, v)). The true
-// boundary, and every point that classifier might call IN or ON against the
-// geometry, lie within the union of these tubes.
+// which OpenCASCADE's face classifier answers with tolerances (twice the
+// (u, v) tolerance it is built with, and the edge's 3D tolerance carried into
+// (u, v)). The true boundary, and every point that classifier might call ON
+// against the geometry, lie within the union of these tubes. Each chord also
+// has finer chords of its piece of pcurve, ten times closer to it.
 //
 // A kd-tree cuts the (u, v) box into cells (built by face_tessellation.cpp).
 // A cell no tube meets is wholly inside or wholly outside the face (its centre
@@ -15,8 +16,10 @@
 // point outside every tube, classified once: a point of the cell that is
 // outside every tube has the reference's state flipped by each chord the
 // segment between them crosses (exact, since both ends lie on the same side of
-// the true boundary as of the chords). Points inside a tube, or where a chord
-// end lies on that segment, are left to the face's classifier.
+// the true boundary as of the chords). A point inside a chord's tube counts
+// that chord's finer chords instead, when it lies outside their tubes. Points
+// inside a finer tube, or where a chord end lies on that segment, are left to
+// the face's classifier.
 #pragma once
 
 #include <BRepTopAdaptor_FClass2d.hxx>
@@ -35,14 +38,18 @@ enum class UvState : std::uint8_t {
   boundary,  ///< undecided: ask the face's classifier
 };
 
-/// A chord of a pcurve; the pcurve stays within `reach` of it.
+/// A chord of a pcurve; the pcurve stays within `reach` of it. A chord may
+/// have finer chords of the same piece of pcurve (UvCells::fine[fine_first,
+/// fine_first + fine_count)), with narrower tubes.
 struct UvSegment {
   double au, av, bu, bv;
   double reach;
+  int fine_first = 0, fine_count = 0;
 };
 
-/// The face's pcurves as chords (see the file comment).
-std::vector<UvSegment> boundary_segments(const FacePatch& f);
+/// The face's pcurves as chords, and their finer chords (see the file comment).
+void boundary_segments(const FacePatch& f, std::vector<UvSegment>& chords,
+                       std::vector<UvSegment>& fine);
 
 class UvCells {
  public:
@@ -88,6 +95,7 @@ class UvCells {
   double box_margin = 0;    ///< the widest chord reach
   std::vector<Node> nodes;  // nodes[0] is the root; empty: everything is boundary
   std::vector<UvSegment> segments;
+  std::vector<UvSegment> fine;  ///< finer chords of the segments (UvSegment::fine_first)
   std::vector<int> segment_refs;
 
  private:

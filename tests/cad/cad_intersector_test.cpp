@@ -194,6 +194,23 @@ TEST(CadCells, ClassifyLikeTheFaceClassifier) {
   }
 }
 
+// Near the boundary the cells follow the exact pcurves: a point whose nearest
+// boundary point lies inside a pcurve is in the face when it lies on the
+// face's side of that pcurve, down to 1e-7 of the (u, v) box.
+TEST(CadCells, FollowTheExactPcurvesNearTheBoundary) {
+  for (const char* file : {"gmsh_part.step", "occtsample_ANC101.step", "gmsh_Zylkopf.stp",
+                           "occtsample_MBBGehauseRohteil.step", "freecad_idf_MSOP_10.stp",
+                           "../brep/occt_bottle.brep"}) {
+    const auto oracle = load_shared(file);
+    if (!oracle) GTEST_SKIP() << kStep << " is absent";
+    CadReference ref(*oracle);
+    const CadReference::CellCheck c = ref.check_cells_near_pcurves(300, 5);
+    std::printf("%s: %d points compared, %d disagree\n", file, c.compared, c.disagree);
+    EXPECT_EQ(c.disagree, 0) << file;
+    EXPECT_GT(c.compared, 50 * static_cast<int>(oracle->patches().size())) << file;
+  }
+}
+
 // Projections of points near the surface land on their face, as close as the
 // face's closest point found by BRepExtrema.
 TEST(CadProject, LandsOnTheFaceAtTheClosestPoint) {

@@ -47,6 +47,13 @@ class CadReference {
   };
   CellCheck check_cells(int per_face, unsigned seed);
 
+  /// The cells' classification against the exact pcurves, at `per_face` points
+  /// of every face offset from a pcurve by 1e-7..1e-2 of the face's (u, v) box:
+  /// a point whose nearest boundary point lies inside a pcurve (not at a
+  /// vertex, not on a seam) is in the face when it lies left of the boundary's
+  /// direction there. Points the cells leave undecided are not compared.
+  CellCheck check_cells_near_pcurves(int per_face, unsigned seed);
+
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
