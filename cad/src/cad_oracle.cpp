@@ -181,14 +181,19 @@ SubdomainId CadOracle::locate(const Point3& p) const {
 
 SubdomainId CadOracle::locate_from(const Point3& p, const Point3& known,
                                    SubdomainId known_label) const {
+  return locate_across(p, known, known_label).label;
+}
+
+DomainOracle::Located CadOracle::locate_across(const Point3& p, const Point3& known,
+                                              SubdomainId known_label) const {
   const Model& m = *model_;
-  if (!m.box.contains(p)) return kOutside;
+  if (!m.box.contains(p)) return {kOutside, std::nullopt};
   try {
     // The crossing nearest p on [p, known] is the last one on the way to p.
     const std::optional<cad::RayHit> h = first_hit(m, serial_, p, known);
-    if (!h) return known_label;
-    if (h->tangent || std::fabs(h->cosine) <= 1e-3) return locate(p);
-    return side_of_start(m, *h);
+    if (!h) return {known_label, std::nullopt};
+    if (h->tangent || std::fabs(h->cosine) <= 1e-3) return {locate(p), std::nullopt};
+    return {side_of_start(m, *h), SurfaceHit{h->point, m.patches[h->face].id}};
   } catch (const Standard_Failure& e) {
     rethrow_occt(e, "locate_from");
   }

@@ -91,6 +91,9 @@ class Refiner {
   void init_cell(Cell_handle c, Cell_handle from = Cell_handle());
   /// Recomputes facet (c, i)'s restricted status on both sides and queues it if bad.
   void update_facet(Cell_handle c, int i);
+  /// The crossing init_cell() kept for facet (c, i), when it was found against
+  /// the present neighbor n; forgotten either way.
+  std::optional<SurfaceHit> take_crossing(Cell_handle c, int i, Cell_handle n);
   /// The dual Voronoi edge of facet (c, i), clipped to the enlarged box.
   bool dual_segment(Cell_handle c, int i, Point3& a, Point3& b) const;
   /// Badness of a restricted facet (> 0 when R3 or R4 applies).

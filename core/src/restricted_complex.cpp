@@ -19,6 +19,7 @@ void Refiner::init_cell(Cell_handle c, Cell_handle from) {
   CellInfo& info = c->info();
   info.stamp = next_stamp_++;
   info.facet_patch = {0, 0, 0, 0};
+  info.crossing_facet = -1;
   if (tr_.is_infinite(c)) {
     info.label = kOutside.value;
     return;
@@ -42,10 +43,30 @@ void Refiner::init_cell(Cell_handle c, Cell_handle from) {
   }
   const bool known = from != Cell_handle() && from->info().stamp != 0 && !tr_.is_infinite(from) &&
                      is_finite(from->info().circumcenter);
-  info.label = known ? oracle_.locate_from(info.circumcenter, from->info().circumcenter,
-                                           SubdomainId{from->info().label})
-                           .value
-                     : oracle_.locate(info.circumcenter).value;
+  if (!known) {
+    info.label = oracle_.locate(info.circumcenter).value;
+    return;
+  }
+  // [circumcenter, from's] is the dual edge of the facet between the two
+  // cells: a crossing found on it serves that facet too (update_facet()).
+  const DomainOracle::Located l = oracle_.locate_across(
+      info.circumcenter, from->info().circumcenter, SubdomainId{from->info().label});
+  info.label = l.label.value;
+  if (l.crossing && l.label.value != from->info().label) {
+    const int i = c->index(from);
+    info.crossing_facet = static_cast<std::int8_t>(i);
+    info.crossing_with = from->info().stamp;
+    info.facet_patch[i] = l.crossing->patch.value;
+    info.surface_center[i] = l.crossing->point;
+  }
+}
+
+std::optional<SurfaceHit> Refiner::take_crossing(Cell_handle c, int i, Cell_handle n) {
+  CellInfo& info = c->info();
+  if (info.crossing_facet != i) return std::nullopt;
+  info.crossing_facet = -1;
+  if (info.crossing_with != n->info().stamp || info.facet_patch[i] == 0) return std::nullopt;
+  return SurfaceHit{info.surface_center[i], PatchId{info.facet_patch[i]}};
 }
 
 bool Refiner::dual_segment(Cell_handle c, int i, Point3& a, Point3& b) const {
@@ -95,16 +116,20 @@ bool Refiner::dual_segment(Cell_handle c, int i, Point3& a, Point3& b) const {
 void Refiner::update_facet(Cell_handle c, int i) {
   const Cell_handle n = c->neighbor(i);
   const int j = n->index(c);
+  std::optional<SurfaceHit> hit = take_crossing(c, i, n);
+  if (!hit) hit = take_crossing(n, j, c);
   c->info().facet_patch[i] = 0;
   n->info().facet_patch[j] = 0;
   // Equal labels: no crossing (or an even number, which refinement removes).
   // Surface only, every dual edge is asked: an open patch has no sides.
   if (c->info().label == n->info().label && !options_.surface_only) return;
 
-  Point3 a, b;
-  if (!dual_segment(c, i, a, b)) return;
-  const std::optional<SurfaceHit> hit = oracle_.intersect(a, b);
-  if (!hit) return;
+  if (!hit) {
+    Point3 a, b;
+    if (!dual_segment(c, i, a, b)) return;
+    hit = oracle_.intersect(a, b);
+    if (!hit) return;
+  }
   c->info().facet_patch[i] = hit->patch.value;
   c->info().surface_center[i] = hit->point;
   n->info().facet_patch[j] = hit->patch.value;

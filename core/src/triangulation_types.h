@@ -44,6 +44,11 @@ struct CellInfo {
   double squared_radius = 0.0;  ///< finite cells only
   std::array<int, 4> facet_patch{};          ///< PatchId value of facet i, 0 = not restricted
   std::array<Point3, 4> surface_center{};    ///< center of facet i's surface Delaunay ball
+  /// A crossing of facet `crossing_facet`'s dual edge found while labeling this
+  /// cell from the neighbor with stamp `crossing_with` (held in facet_patch and
+  /// surface_center until update_facet() takes it); -1: none.
+  std::int8_t crossing_facet = -1;
+  std::uint32_t crossing_with = 0;
 };
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;

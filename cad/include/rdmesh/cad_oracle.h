@@ -81,6 +81,9 @@ class CadOracle final : public DomainOracle {
   /// keeps known_label. A grazing crossing falls back to locate().
   SubdomainId locate_from(const Point3& p, const Point3& known,
                           SubdomainId known_label) const override;
+  /// locate_from() and the transversal crossing that decided it.
+  Located locate_across(const Point3& p, const Point3& known,
+                        SubdomainId known_label) const override;
   /// The transversal crossing nearest to a; when none is found but the end
   /// labels differ, the label change is bracketed by bisection on locate().
   std::optional<SurfaceHit> intersect(const Point3& a, const Point3& b) const override;

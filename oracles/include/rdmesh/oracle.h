@@ -57,6 +57,22 @@ class DomainOracle {
     return locate(p);
   }
 
+  /// locate_from(p, known, known_label), and the crossing of [p, known] that
+  /// decided it when the oracle found one: a hit that meets intersect()'s
+  /// guarantee for that segment. The refiner labels a new cell from a
+  /// neighbor's center and then needs a crossing of the very same segment (the
+  /// dual edge of the facet between them) when their labels differ; an oracle
+  /// that answers locate_from() by a crossing hands it over here. The default
+  /// returns none, and the refiner calls intersect().
+  struct Located {
+    SubdomainId label;
+    std::optional<SurfaceHit> crossing;
+  };
+  virtual Located locate_across(const Point3& p, const Point3& known,
+                                SubdomainId known_label) const {
+    return {locate_from(p, known, known_label), std::nullopt};
+  }
+
   /// A crossing of segment [a, b] with a patch. Guarantee: whenever
   /// locate(a) != locate(b) a hit is returned, its point lies on the segment
   /// within tolerance() of the patch, and its patch separates two labels met
