@@ -19,6 +19,11 @@ void grow(Box3& b, const Point3& p) {
 
 double axis(const Point3& p, int k) { return k == 0 ? p.x : (k == 1 ? p.y : p.z); }
 
+double half_area(const Box3& b) {
+  const Point3 e = b.hi - b.lo;
+  return e.x * e.y + e.y * e.z + e.z * e.x;
+}
+
 }  // namespace
 
 TriangleBvh::TriangleBvh(const std::vector<Point3>& points,
@@ -69,17 +74,70 @@ int TriangleBvh::build(int begin, int end, int depth, const std::vector<Box3>& b
   }
   const Point3 extent = cbox.hi - cbox.lo;
   const int k = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
-  const int mid = begin + (end - begin) / 2;
-  std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end,
-                   [&](int a, int b) {
-                     const double ca = axis(centroids[a], k), cb = axis(centroids[b], k);
-                     return ca < cb || (ca == cb && a < b);
-                   });
+  const int mid = sah_split(begin, end, k, axis(cbox.lo, k), axis(extent, k), boxes, centroids);
   build(begin, mid, depth + 1, boxes, centroids);
   const int right = build(mid, end, depth + 1, boxes, centroids);
   nodes_[index].first = right;
   nodes_[index].count = 0;
   return index;
+}
+
+int TriangleBvh::sah_split(int begin, int end, int k, double lo, double width,
+                           const std::vector<Box3>& boxes, const std::vector<Point3>& centroids) {
+  // Binned surface area heuristic along axis k: the cut between bins that
+  // minimizes area(left) * count(left) + area(right) * count(right), so that a
+  // query's segment enters few boxes; the median when the centres coincide.
+  constexpr int kBins = 16;
+  const int mid = begin + (end - begin) / 2;
+  auto by_axis = [&](int a, int b) {
+    const double ca = axis(centroids[a], k), cb = axis(centroids[b], k);
+    return ca < cb || (ca == cb && a < b);
+  };
+  auto bin_of = [&](int item) {
+    const int b = static_cast<int>(kBins * (axis(centroids[item], k) - lo) / width);
+    return std::clamp(b, 0, kBins - 1);
+  };
+  if (!(width > 0)) {
+    std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end, by_axis);
+    return mid;
+  }
+  Box3 bin_box[kBins];
+  int bin_count[kBins] = {};
+  for (Box3& b : bin_box) b = empty_box();
+  for (int i = begin; i < end; ++i) {
+    const int b = bin_of(order_[i]);
+    ++bin_count[b];
+    grow(bin_box[b], boxes[order_[i]].lo);
+    grow(bin_box[b], boxes[order_[i]].hi);
+  }
+  double right_area[kBins];
+  int right_count[kBins];
+  Box3 acc = empty_box();
+  int count = 0;
+  for (int b = kBins - 1; b > 0; --b) {
+    if (bin_count[b] > 0) grow(acc, bin_box[b].lo), grow(acc, bin_box[b].hi);
+    count += bin_count[b];
+    right_area[b] = count > 0 ? half_area(acc) : 0;
+    right_count[b] = count;
+  }
+  acc = empty_box();
+  count = 0;
+  double best = HUGE_VAL;
+  int best_cut = -1;  // left: bins [0, best_cut)
+  for (int b = 1; b < kBins; ++b) {
+    if (bin_count[b - 1] > 0) grow(acc, bin_box[b - 1].lo), grow(acc, bin_box[b - 1].hi);
+    count += bin_count[b - 1];
+    if (count == 0 || right_count[b] == 0) continue;
+    const double cost = half_area(acc) * count + right_area[b] * right_count[b];
+    if (cost < best) best = cost, best_cut = b;
+  }
+  if (best_cut < 0) {
+    std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end, by_axis);
+    return mid;
+  }
+  const auto split = std::partition(order_.begin() + begin, order_.begin() + end,
+                                    [&](int item) { return bin_of(item) < best_cut; });
+  return static_cast<int>(split - order_.begin());
 }
 
 SegmentBoxTest::SegmentBoxTest(const Point3& a, const Point3& b) {

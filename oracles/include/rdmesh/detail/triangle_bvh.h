@@ -3,8 +3,9 @@
 // not part of the oracle interface.
 //
 // Nodes are stored depth-first in one array; a leaf holds up to kLeafSize
-// consecutive entries of `order()` (item indices). Built once by median
-// splits on the longest axis of the items' centre points; queries are const,
+// consecutive entries of `order()` (item indices). Built once by splits along
+// the longest axis of the items' centre points, where the binned surface area
+// heuristic puts them (the median when the centres coincide); queries are const,
 // allocation-free (fixed traversal stack) and thread-safe.
 #pragma once
 
@@ -96,6 +97,10 @@ class TriangleBvh {
   void build_all(const std::vector<Box3>& boxes, const std::vector<Point3>& centres);
   int build(int begin, int end, int depth, const std::vector<Box3>& boxes,
             const std::vector<Point3>& centres);
+  /// Reorders order_[begin, end) into two non-empty runs along axis k (centres
+  /// spread over [lo, lo + width]); returns where the second run starts.
+  int sah_split(int begin, int end, int k, double lo, double width, const std::vector<Box3>& boxes,
+                const std::vector<Point3>& centroids);
 
   std::vector<Node> nodes_;
   std::vector<int> order_;
