@@ -60,6 +60,10 @@ void build_accelerator(CadOracle::Model& m) {
   const double size = m.box.diagonal();
   std::vector<Box3> boxes;
   int untessellated = 0;
+  // Room for a typical tessellation up front: growing a vector of a few MB by
+  // doubling copies it and faults in fresh pages at each step. Pages reserved
+  // but never written cost nothing.
+  m.triangles.reserve(256 * m.faces.size());
   for (std::size_t i = 0; i < m.faces.size(); ++i) {
     FacePatch& f = m.faces[i];
     const int face = static_cast<int>(i);

@@ -8,7 +8,6 @@
 #include <cstdint>
 #include <limits>
 #include <map>
-#include <unordered_map>
 
 #include "rdmesh/errors.h"
 #include "simplex_geometry.h"
@@ -372,7 +371,9 @@ bool ProtectionPlanner::separate_balls(bool record) {
   // partners among all, an unmoved one among the moved only: each pair with a
   // moved ball is still seen once (from its smaller ball, or from its first
   // one at the same level), a pair of unmoved balls is not looked at.
-  using Grid = std::map<int, std::unordered_map<std::uint64_t, std::vector<int>>>;
+  // Per level, (cell key, ball) pairs sorted: one allocation per level, and
+  // a cell's balls in ball order.
+  using Grid = std::map<int, std::vector<std::pair<std::uint64_t, int>>>;
   std::vector<int> level(balls.size());
   Grid all, moved;
   for (std::size_t k = 0; k < balls.size(); ++k) {
@@ -382,8 +383,11 @@ bool ProtectionPlanner::separate_balls(bool record) {
     const std::uint64_t where = key(static_cast<std::int64_t>(std::floor(c.x / cell)),
                                     static_cast<std::int64_t>(std::floor(c.y / cell)),
                                     static_cast<std::int64_t>(std::floor(c.z / cell)));
-    all[level[k]][where].push_back(static_cast<int>(k));
-    if (balls[k].moved) moved[level[k]][where].push_back(static_cast<int>(k));
+    all[level[k]].emplace_back(where, static_cast<int>(k));
+    if (balls[k].moved) moved[level[k]].emplace_back(where, static_cast<int>(k));
+  }
+  for (Grid* grid : {&all, &moved}) {
+    for (auto& [lvl, cells] : *grid) std::sort(cells.begin(), cells.end());
   }
   std::vector<double> factor(balls.size(), 1.0);
   bool conflict = false;
@@ -402,9 +406,11 @@ bool ProtectionPlanner::separate_balls(bool record) {
       for (std::int64_t x = lo[0]; x <= hi[0]; ++x) {
         for (std::int64_t y = lo[1]; y <= hi[1]; ++y) {
           for (std::int64_t z = lo[2]; z <= hi[2]; ++z) {
-            const auto here = g->second.find(key(x, y, z));
-            if (here == g->second.end()) continue;
-            for (int other : here->second) {
+            const std::uint64_t where = key(x, y, z);
+            auto here = std::lower_bound(g->second.begin(), g->second.end(),
+                                         std::make_pair(where, std::numeric_limits<int>::min()));
+            for (; here != g->second.end() && here->first == where; ++here) {
+              const int other = here->second;
               // Same level: each pair once, from its first ball.
               if (level[other] == level[k] && other <= static_cast<int>(k)) continue;
               const Ball& o = balls[other];
