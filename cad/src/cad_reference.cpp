@@ -2,11 +2,11 @@
 #include "rdmesh/cad_reference.h"
 
 #include <BRepAdaptor_Curve2d.hxx>
-#include <Geom2dAPI_ProjectPointOnCurve.hxx>
-#include <Geom2d_Curve.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
 #include <BRep_Tool.hxx>
+#include <Geom2dAPI_ProjectPointOnCurve.hxx>
+#include <Geom2d_Curve.hxx>
 #include <GeomAPI_ProjectPointOnSurf.hxx>
 #include <IntCurvesFace_Intersector.hxx>
 #include <TopExp_Explorer.hxx>
@@ -208,10 +208,12 @@ CadReference::CellCheck CadReference::check_cells_near_pcurves(int per_face, uns
         for (const Pcurve& c : pcurves) {
           Geom2dAPI_ProjectPointOnCurve proj(p, c.curve, c.t0, c.t1);
           for (int i = 1; i <= proj.NbPoints(); ++i) {
-            if (proj.Distance(i) < best) best = proj.Distance(i), best_t = proj.Parameter(i), nearest = &c;
+            if (proj.Distance(i) < best)
+              best = proj.Distance(i), best_t = proj.Parameter(i), nearest = &c;
           }
           for (double end : {c.t0, c.t1}) {  // a vertex nearer than any interior foot
-            if (c.curve->Value(end).Distance(p) < best) best = c.curve->Value(end).Distance(p), nearest = nullptr;
+            if (c.curve->Value(end).Distance(p) < best)
+              best = c.curve->Value(end).Distance(p), nearest = nullptr;
           }
         }
         if (!nearest || nearest->seam) continue;
@@ -222,7 +224,8 @@ CadReference::CellCheck CadReference::check_cells_near_pcurves(int per_face, uns
         gp_Pnt2d foot;
         gp_Vec2d dir;
         nearest->curve->D1(best_t, foot, dir);
-        const double left = nearest->sense * (dir.X() * (p.Y() - foot.Y()) - dir.Y() * (p.X() - foot.X()));
+        const double left =
+            nearest->sense * (dir.X() * (p.Y() - foot.Y()) - dir.Y() * (p.X() - foot.X()));
         ++out.compared;
         out.disagree += (mine == cad::UvState::inside) != (left > 0);
       }
