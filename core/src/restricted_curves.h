@@ -21,8 +21,8 @@ namespace rdmesh::detail {
 /// The sample at parameter t and the arc from it to the next sample.
 struct CurveSample {
   Vertex_handle vertex;  ///< valid during refinement
-  Point3 position;       ///< the sample point (stays valid after exudation)
-  Point3 center;         ///< restricted Delaunay ball of the arc to the next sample
+  Point3 position{};     ///< the sample point (stays valid after exudation)
+  Point3 center{};       ///< restricted Delaunay ball of the arc to the next sample
   double t_center = 0;   ///< parameter of the center
   double squared_radius = 0;
 };
