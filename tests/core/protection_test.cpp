@@ -65,7 +65,9 @@ void expect_protected(const Layout& l, const ProtectionPlan& plan, const Criteri
     ASSERT_GE(s.size(), info.closed ? 4u : 3u) << info.name;
     for (std::size_t i = 0; i < s.size(); ++i) {
       EXPECT_LE(distance(s[i].point, curve.point(s[i].t)), 1e-9) << info.name;
-      if (i > 0) EXPECT_GT(s[i].t, s[i - 1].t) << info.name;
+      if (i > 0) {
+        EXPECT_GT(s[i].t, s[i - 1].t) << info.name;
+      }
     }
     if (!info.closed) {
       EXPECT_EQ(s.front().point, l.corners[info.start.value - 1].point);
