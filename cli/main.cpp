@@ -13,6 +13,7 @@
 #include "rdmesh/mesh_writers.h"
 #include "rdmesh/mesher.h"
 #include "rdmesh/quality_report.h"
+#include "heap_setup.h"
 #include "run_setup.h"
 #include "progress_display.h"
 
@@ -92,6 +93,7 @@ int run(const rdmesh::cli::Options& opt) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  rdmesh::cli::setup_heap();
   CLI::App app{"rdmesh: tetrahedral meshes of domains bounded by piecewise smooth surfaces"};
   rdmesh::cli::Options opt;
   rdmesh::cli::add_options(app, opt);
