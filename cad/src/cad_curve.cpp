@@ -1,7 +1,12 @@
 // EdgeCurve: exact queries on an edge's 3D curve (Geom_Curve evaluation is
-// const and cache-free, hence thread-safe). Arc length is composite 5-point
+// const and cache-free, hence thread-safe; a B-spline's per-span polynomial
+// caches are built up front and only read afterwards). Arc length is composite 5-point
 // Gauss-Legendre over fixed cells with a cumulative table, so length() is
 // additive by construction and parameter_at_length() inverts it by Newton.
+#include <Geom_BSplineCurve.hxx>
+#include <Geom_TrimmedCurve.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColgp_Array1OfPnt.hxx>
 #include <algorithm>
 #include <cmath>
 #include <gp_Pnt.hxx>
@@ -24,8 +29,12 @@ Point3 to_point(const gp_XYZ& p) { return {p.X(), p.Y(), p.Z()}; }
 EdgeCurve::EdgeCurve(Handle(Geom_Curve) curve, double t0, double t1, Point3 q0, Point3 q1,
                      int samples)
     : curve_(std::move(curve)), t0_(t0), t1_(t1), samples_(std::max(samples, 4)) {
-  d0_ = q0 - to_point(curve_->Value(t0_).XYZ());
-  d1_ = q1 - to_point(curve_->Value(t1_).XYZ());
+  build_span_caches();
+  gp_Pnt c0, c1;  // the same evaluation as point()'s, so that point(t0) == q0
+  evaluate(t0_, c0, nullptr, nullptr);
+  evaluate(t1_, c1, nullptr, nullptr);
+  d0_ = q0 - to_point(c0.XYZ());
+  d1_ = q1 - to_point(c1.XYZ());
   const int cells = std::max(8, 2 * samples_);
   cell_ = (t1_ - t0_) / cells;
   cumulative_.assign(cells + 1, 0.0);
@@ -34,17 +43,73 @@ EdgeCurve::EdgeCurve(Handle(Geom_Curve) curve, double t0, double t1, Point3 q0, 
   }
 }
 
+void EdgeCurve::build_span_caches() {
+  Handle(Geom_Curve) basis = curve_;
+  while (auto trimmed = Handle(Geom_TrimmedCurve)::DownCast(basis)) basis = trimmed->BasisCurve();
+  const Handle(Geom_BSplineCurve) b = Handle(Geom_BSplineCurve)::DownCast(basis);
+  // A periodic curve's parameters may wrap past its knots: left to Geom_Curve.
+  if (b.IsNull() || b->IsPeriodic()) return;
+  const int degree = b->Degree();
+  TColStd_Array1OfReal flat(1, b->NbPoles() + degree + 1);
+  b->KnotSequence(flat);
+  TColgp_Array1OfPnt poles(1, b->NbPoles());
+  b->Poles(poles);
+  TColStd_Array1OfReal weights(1, b->NbPoles());
+  const bool rational = b->IsRational();
+  if (rational) b->Weights(weights);
+  const TColStd_Array1OfReal* w = rational ? &weights : nullptr;
+  const double lo = std::min(t0_, t1_), hi = std::max(t0_, t1_);
+  for (int k = 1; k < b->NbKnots(); ++k) {
+    const double a = b->Knot(k), e = b->Knot(k + 1);
+    if (!(e > a) || e <= lo || a >= hi) continue;
+    Handle(BSplCLib_Cache) cache = new BSplCLib_Cache(degree, false, flat, poles, w);
+    cache->BuildCache(0.5 * (a + e), flat, poles, w);
+    if (!span_start_.empty() && a != spans_end_) {  // a gap: no caches at all
+      spans_.clear();
+      span_start_.clear();
+      return;
+    }
+    spans_.push_back(cache);
+    span_start_.push_back(a);
+    spans_end_ = e;
+  }
+}
+
+void EdgeCurve::evaluate(double t, gp_Pnt& p, gp_Vec* d1, gp_Vec* d2) const {
+  if (!spans_.empty() && t >= span_start_.front() && t <= spans_end_) {
+    const auto it = std::upper_bound(span_start_.begin(), span_start_.end(), t);
+    const BSplCLib_Cache& cache = *spans_[std::max<std::ptrdiff_t>(it - span_start_.begin() - 1, 0)];
+    if (d2) {
+      cache.D2(t, p, *d1, *d2);
+    } else if (d1) {
+      cache.D1(t, p, *d1);
+    } else {
+      cache.D0(t, p);
+    }
+    return;
+  }
+  if (d2) {
+    curve_->D2(t, p, *d1, *d2);
+  } else if (d1) {
+    curve_->D1(t, p, *d1);
+  } else {
+    curve_->D0(t, p);
+  }
+}
+
 Point3 EdgeCurve::point(double t) const {
-  if (t == t0_) return to_point(curve_->Value(t0_).XYZ()) + d0_;
-  if (t == t1_) return to_point(curve_->Value(t1_).XYZ()) + d1_;
+  gp_Pnt p;
+  evaluate(t, p, nullptr, nullptr);
+  if (t == t0_) return to_point(p.XYZ()) + d0_;
+  if (t == t1_) return to_point(p.XYZ()) + d1_;
   const double s = (t - t0_) / (t1_ - t0_);
-  return to_point(curve_->Value(t).XYZ()) + (1 - s) * d0_ + s * d1_;
+  return to_point(p.XYZ()) + (1 - s) * d0_ + s * d1_;
 }
 
 Point3 EdgeCurve::derivative(double t) const {
   gp_Pnt p;
   gp_Vec v;
-  curve_->D1(t, p, v);
+  evaluate(t, p, &v, nullptr);
   return to_point(v.XYZ()) + (1.0 / (t1_ - t0_)) * (d1_ - d0_);
 }
 
@@ -119,7 +184,7 @@ double EdgeCurve::closest(const Point3& p, double ta, double tb) const {
   auto f = [&](double t, double* slope) {
     gp_Pnt q;
     gp_Vec v1, v2;
-    curve_->D2(t, q, v1, v2);
+    evaluate(t, q, &v1, &v2);
     const double s = (t - t0_) / (t1_ - t0_);
     const Point3 e = to_point(q.XYZ()) + (1 - s) * d0_ + s * d1_ - p;
     const Point3 c1 = to_point(v1.XYZ()) + blend;

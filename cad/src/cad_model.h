@@ -2,6 +2,7 @@
 #pragma once
 
 #include <BRepTopAdaptor_FClass2d.hxx>
+#include <BSplCLib_Cache.hxx>
 #include <Geom_Curve.hxx>
 #include <Geom_Surface.hxx>
 #include <Standard_Failure.hxx>
@@ -47,13 +48,28 @@ class EdgeCurve final : public Curve {
   double closest(const Point3& p, double ta, double tb) const override;
   std::vector<double> plane_crossings(const Point3& normal, double offset, double ta,
                                       double tb) const override;
+  /// The edge's 3D curve (before the end corrections), for reference checks.
+  const Handle(Geom_Curve)& geometry() const { return curve_; }
+  /// Whether point() reads B-spline span caches rather than the Geom_Curve.
+  bool cached() const { return !spans_.empty(); }
 
  private:
   Point3 derivative(double t) const;
+  /// The curve's own C(t), C'(t) and (when d2) C''(t): from the span's cache for
+  /// a B-spline, else from the Geom_Curve.
+  void evaluate(double t, gp_Pnt& p, gp_Vec* d1, gp_Vec* d2) const;
+  void build_span_caches();
   double speed_integral(double u, double v) const;  // Gauss-Legendre on one cell
   double arc(double t) const;                       // length from t0 to t
   int samples_over(double ta, double tb) const;
   Handle(Geom_Curve) curve_;
+  /// B-spline curves: one polynomial cache per knot span meeting [t0, t1]
+  /// (span k starts at span_start_[k]), built once. Evaluating a cache is
+  /// const, so queries stay thread-safe; de Boor's algorithm on every call
+  /// (Geom_BSplineCurve::D0) was the planner's main cost on drill.
+  std::vector<Handle(BSplCLib_Cache)> spans_;
+  std::vector<double> span_start_;
+  double spans_end_ = 0;
   double t0_, t1_;
   Point3 d0_, d1_;
   int samples_;

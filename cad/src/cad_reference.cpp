@@ -7,6 +7,7 @@
 #include <BRep_Tool.hxx>
 #include <Geom2dAPI_ProjectPointOnCurve.hxx>
 #include <Geom2d_Curve.hxx>
+#include <GeomAPI_ProjectPointOnCurve.hxx>
 #include <GeomAPI_ProjectPointOnSurf.hxx>
 #include <IntCurvesFace_Intersector.hxx>
 #include <TopExp_Explorer.hxx>
@@ -233,6 +234,34 @@ CadReference::CellCheck CadReference::check_cells_near_pcurves(int per_face, uns
   } catch (const Standard_Failure& e) {
     throw OracleError("OpenCASCADE failed in CadReference::check_cells_near_pcurves: " +
                       cad::describe(e));
+  }
+  return out;
+}
+
+CadReference::CurveCheck CadReference::check_curves(int per_curve) {
+  const CadOracle::Model& m = *impl_->model;
+  CurveCheck out;
+  for (std::size_t j = 0; j < m.curves.size(); ++j) {
+    const cad::EdgeCurve& c = *m.curves[j];
+    const CurveInfo& info = m.curve_infos[j];
+    ++out.curves;
+    if (c.cached()) ++out.cached_curves;
+    const double t0 = info.t_begin, t1 = info.t_end;
+    auto gap = [&](double t) {
+      const gp_Pnt exact = c.geometry()->Value(t);
+      return distance(c.point(t), Point3{exact.X(), exact.Y(), exact.Z()});
+    };
+    const double ends = std::max(gap(t0), gap(t1));  // the corrections, blended linearly
+    for (int k = 0; k < per_curve; ++k) {
+      const double t = t0 + (t1 - t0) * (k + 0.5) / per_curve;
+      const Point3 p = c.point(t);
+      GeomAPI_ProjectPointOnCurve projection(gp_Pnt(p.x, p.y, p.z), c.geometry(), t0, t1);
+      if (projection.NbPoints() == 0) {
+        out.max_excess = std::numeric_limits<double>::infinity();
+        continue;
+      }
+      out.max_excess = std::max(out.max_excess, projection.LowerDistance() - ends);
+    }
   }
   return out;
 }

@@ -211,6 +211,25 @@ TEST(CadCells, FollowTheExactPcurvesNearTheBoundary) {
   }
 }
 
+// The curves follow their edges' exact 3D curves, B-spline span caches
+// included, to within rounding of the model's size (beyond the end corrections
+// that make them meet the corners).
+TEST(CadCurves, FollowTheEdgesExactCurves) {
+  int cached = 0;
+  for (const char* file : {"occtsample_drill.step", "gmsh_Zylkopf.stp", "gmsh_Kurbelwelle.stp",
+                           "nist_ctc_01_asme1_ap242-e1.stp", "gmsh_as1-tu-203.stp"}) {
+    const auto oracle = load_shared(file);
+    if (!oracle) GTEST_SKIP() << kStep << " is absent";
+    CadReference ref(*oracle);
+    const CadReference::CurveCheck c = ref.check_curves(40);
+    std::printf("%s: %d curves (%d cached), largest excess %.3g\n", file, c.curves,
+                c.cached_curves, c.max_excess);
+    EXPECT_LE(c.max_excess, 1e-9 * oracle->bounding_box().diagonal()) << file;
+    cached += c.cached_curves;
+  }
+  EXPECT_GT(cached, 0);  // the caches were exercised
+}
+
 // Projections of points near the surface land on their face, as close as the
 // face's closest point found by BRepExtrema.
 TEST(CadProject, LandsOnTheFaceAtTheClosestPoint) {

@@ -54,6 +54,18 @@ class CadReference {
   /// direction there. Points the cells leave undecided are not compared.
   CellCheck check_cells_near_pcurves(int per_face, unsigned seed);
 
+  /// The oracle's curves against their edges' 3D curves (GeomAPI_ProjectPointOnCurve),
+  /// at `per_curve` parameters of every curve: the largest distance from
+  /// point(t) to the exact curve beyond the end corrections that make point()
+  /// meet the corners (the larger of the two at each end), and the number of
+  /// curves whose evaluation goes through B-spline span caches.
+  struct CurveCheck {
+    double max_excess = 0;
+    int cached_curves = 0;
+    int curves = 0;
+  };
+  CurveCheck check_curves(int per_curve);
+
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
