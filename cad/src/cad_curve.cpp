@@ -58,17 +58,14 @@ void EdgeCurve::build_span_caches() {
   const bool rational = b->IsRational();
   if (rational) b->Weights(weights);
   const TColStd_Array1OfReal* w = rational ? &weights : nullptr;
+  // The knots are distinct and increasing: the spans meeting [t0, t1] follow
+  // one another without gaps.
   const double lo = std::min(t0_, t1_), hi = std::max(t0_, t1_);
   for (int k = 1; k < b->NbKnots(); ++k) {
     const double a = b->Knot(k), e = b->Knot(k + 1);
-    if (!(e > a) || e <= lo || a >= hi) continue;
+    if (e <= lo || a >= hi) continue;
     Handle(BSplCLib_Cache) cache = new BSplCLib_Cache(degree, false, flat, poles, w);
     cache->BuildCache(0.5 * (a + e), flat, poles, w);
-    if (!span_start_.empty() && a != spans_end_) {  // a gap: no caches at all
-      spans_.clear();
-      span_start_.clear();
-      return;
-    }
     spans_.push_back(cache);
     span_start_.push_back(a);
     spans_end_ = e;
@@ -76,25 +73,19 @@ void EdgeCurve::build_span_caches() {
 }
 
 void EdgeCurve::evaluate(double t, gp_Pnt& p, gp_Vec* d1, gp_Vec* d2) const {
-  if (!spans_.empty() && t >= span_start_.front() && t <= spans_end_) {
-    const auto it = std::upper_bound(span_start_.begin(), span_start_.end(), t);
-    const BSplCLib_Cache& cache = *spans_[std::max<std::ptrdiff_t>(it - span_start_.begin() - 1, 0)];
+  // BSplCLib_Cache and Geom_Curve name their evaluations alike.
+  auto from = [&](const auto& source) {
     if (d2) {
-      cache.D2(t, p, *d1, *d2);
+      source.D2(t, p, *d1, *d2);
     } else if (d1) {
-      cache.D1(t, p, *d1);
+      source.D1(t, p, *d1);
     } else {
-      cache.D0(t, p);
+      source.D0(t, p);
     }
-    return;
-  }
-  if (d2) {
-    curve_->D2(t, p, *d1, *d2);
-  } else if (d1) {
-    curve_->D1(t, p, *d1);
-  } else {
-    curve_->D0(t, p);
-  }
+  };
+  if (spans_.empty() || t < span_start_.front() || t > spans_end_) return from(*curve_);
+  const auto it = std::upper_bound(span_start_.begin(), span_start_.end(), t);
+  from(*spans_[std::max<std::ptrdiff_t>(it - span_start_.begin() - 1, 0)]);
 }
 
 Point3 EdgeCurve::point(double t) const {
