@@ -97,10 +97,11 @@ int TriangleBvh::sah_split(int begin, int end, int k, double lo, double width,
     const int b = static_cast<int>(kBins * (axis(centroids[item], k) - lo) / width);
     return std::clamp(b, 0, kBins - 1);
   };
-  if (!(width > 0)) {
+  auto median = [&] {
     std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end, by_axis);
     return mid;
-  }
+  };
+  if (!(width > 0)) return median();
   Box3 bin_box[kBins];
   int bin_count[kBins] = {};
   for (Box3& b : bin_box) b = empty_box();
@@ -131,10 +132,7 @@ int TriangleBvh::sah_split(int begin, int end, int k, double lo, double width,
     const double cost = half_area(acc) * count + right_area[b] * right_count[b];
     if (cost < best) best = cost, best_cut = b;
   }
-  if (best_cut < 0) {
-    std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end, by_axis);
-    return mid;
-  }
+  if (best_cut < 0) return median();
   const auto split = std::partition(order_.begin() + begin, order_.begin() + end,
                                     [&](int item) { return bin_of(item) < best_cut; });
   return static_cast<int>(split - order_.begin());
