@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <initializer_list>
 #include <random>
 #include <vector>
 
@@ -179,18 +180,29 @@ INSTANTIATE_TEST_SUITE_P(Files, SharedStep,
 // pcurves with narrow excursions (Solid_56: edges of tolerance 4e-3 whose
 // pcurves dip 0.1 into the face between sparse samples) and on a face whose
 // (u, v) box spans two periods (the bottle's thread).
-TEST(CadCells, ClassifyLikeTheFaceClassifier) {
-  for (const char* file :
-       {"gmsh_t20_data_component8.step", "gmsh_periodic_u_cst.step", "occtsample_drill.step",
-        "gmsh_Zylkopf.stp", "nist_stc_06_asme1_ap242-e3.stp", "gmsh_Solid_56.step",
-        "../brep/occt_bottle.brep"}) {
+// Runs a CadReference cell check on each file: no disagreement, and more than
+// `per_patch` points compared per patch. False when the data is absent.
+template <class Check>
+bool expect_cells_agree(std::initializer_list<const char*> files, int per_patch, Check check) {
+  for (const char* file : files) {
     const auto oracle = load_shared(file);
-    if (!oracle) GTEST_SKIP() << kStep << " is absent";
+    if (!oracle) return false;
     CadReference ref(*oracle);
-    const CadReference::CellCheck c = ref.check_cells(200, 3);
+    const CadReference::CellCheck c = check(ref);
     std::printf("%s: %d points compared, %d disagree\n", file, c.compared, c.disagree);
     EXPECT_EQ(c.disagree, 0) << file;
-    EXPECT_GT(c.compared, 100 * static_cast<int>(oracle->patches().size())) << file;
+    EXPECT_GT(c.compared, per_patch * static_cast<int>(oracle->patches().size())) << file;
+  }
+  return true;
+}
+
+TEST(CadCells, ClassifyLikeTheFaceClassifier) {
+  if (!expect_cells_agree(
+          {"gmsh_t20_data_component8.step", "gmsh_periodic_u_cst.step", "occtsample_drill.step",
+           "gmsh_Zylkopf.stp", "nist_stc_06_asme1_ap242-e3.stp", "gmsh_Solid_56.step",
+           "../brep/occt_bottle.brep"},
+          100, [](CadReference& ref) { return ref.check_cells(200, 3); })) {
+    GTEST_SKIP() << kStep << " is absent";
   }
 }
 
@@ -198,16 +210,12 @@ TEST(CadCells, ClassifyLikeTheFaceClassifier) {
 // boundary point lies inside a pcurve is in the face when it lies on the
 // face's side of that pcurve, down to 1e-7 of the (u, v) box.
 TEST(CadCells, FollowTheExactPcurvesNearTheBoundary) {
-  for (const char* file : {"gmsh_part.step", "occtsample_ANC101.step", "gmsh_Zylkopf.stp",
+  if (!expect_cells_agree({"gmsh_part.step", "occtsample_ANC101.step", "gmsh_Zylkopf.stp",
                            "occtsample_MBBGehauseRohteil.step", "freecad_idf_MSOP_10.stp",
-                           "../brep/occt_bottle.brep"}) {
-    const auto oracle = load_shared(file);
-    if (!oracle) GTEST_SKIP() << kStep << " is absent";
-    CadReference ref(*oracle);
-    const CadReference::CellCheck c = ref.check_cells_near_pcurves(300, 5);
-    std::printf("%s: %d points compared, %d disagree\n", file, c.compared, c.disagree);
-    EXPECT_EQ(c.disagree, 0) << file;
-    EXPECT_GT(c.compared, 50 * static_cast<int>(oracle->patches().size())) << file;
+                           "../brep/occt_bottle.brep"},
+                          50,
+                          [](CadReference& ref) { return ref.check_cells_near_pcurves(300, 5); })) {
+    GTEST_SKIP() << kStep << " is absent";
   }
 }
 
