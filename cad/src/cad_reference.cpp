@@ -19,6 +19,7 @@
 #include <random>
 
 #include "cad_model.h"
+#include "surface_evaluator.h"
 
 namespace rdmesh {
 
@@ -262,6 +263,44 @@ CadReference::CurveCheck CadReference::check_curves(int per_curve) {
       }
       out.max_excess = std::max(out.max_excess, projection.LowerDistance() - ends);
     }
+  }
+  return out;
+}
+
+CadReference::SurfaceCheck CadReference::check_surfaces(int per_side) {
+  const CadOracle::Model& m = *impl_->model;
+  SurfaceCheck out;
+  try {
+    for (const cad::FacePatch& f : m.faces) {
+      const cad::SurfaceEvaluator s(f);
+      ++out.faces;
+      if (s.cached()) ++out.cached_faces;
+      auto compare = [&](double u, double v, bool derivatives) {
+        Point3 p, su, sv;
+        s.d1(u, v, p, su, sv);
+        gp_Pnt q;
+        gp_Vec qu, qv;
+        f.surface->D1(u, v, q, qu, qv);
+        out.max_distance = std::max(out.max_distance, distance(p, {q.X(), q.Y(), q.Z()}));
+        if (!derivatives) return;
+        const Point3 eu{qu.X(), qu.Y(), qu.Z()}, ev{qv.X(), qv.Y(), qv.Z()};
+        const double scale = std::max({norm(eu), norm(ev), 1e-300});
+        out.max_derivative_error = std::max(
+            out.max_derivative_error, std::max(distance(su, eu), distance(sv, ev)) / scale);
+      };
+      auto at = [&](double lo, double hi, int k) { return lo + (hi - lo) * (k + 0.5) / per_side; };
+      for (int i = 0; i < per_side; ++i) {
+        for (int j = 0; j < per_side; ++j) compare(at(f.u0, f.u1, i), at(f.v0, f.v1, j), true);
+      }
+      for (double u : s.interior_knots(true)) {
+        for (int j = 0; j < per_side; ++j) compare(u, at(f.v0, f.v1, j), false);
+      }
+      for (double v : s.interior_knots(false)) {
+        for (int i = 0; i < per_side; ++i) compare(at(f.u0, f.u1, i), v, false);
+      }
+    }
+  } catch (const Standard_Failure& e) {
+    throw OracleError("OpenCASCADE failed in CadReference::check_surfaces: " + cad::describe(e));
   }
   return out;
 }

@@ -38,6 +38,15 @@ bool near(const std::vector<double>& sorted, double x) {
   return (it != sorted.end() && close(*it)) || (it != sorted.begin() && close(*(it - 1)));
 }
 
+// Index of the span [k_i, k_i+1) holding x; the end spans extend outwards.
+std::size_t span_index(const std::vector<double>& knots, double x) {
+  const auto it = std::upper_bound(knots.begin() + 1, knots.end() - 1, x);
+  return static_cast<std::size_t>(it - knots.begin()) - 1;
+}
+
+// Span caches beyond this many (u, v) spans: the adaptor's single cache instead.
+constexpr std::size_t kMaxSpans = 1 << 16;
+
 }  // namespace
 
 SurfaceEvaluator::SurfaceEvaluator(const FacePatch& f) : surface_(f.surface), adaptor_(f.surface) {
@@ -57,6 +66,59 @@ SurfaceEvaluator::SurfaceEvaluator(const FacePatch& f) : surface_(f.surface), ad
   u_breaks_ = breaks(adaptor_, true);
   v_breaks_ = breaks(adaptor_, false);
   u_first_ = adaptor_.FirstUParameter(), v_first_ = adaptor_.FirstVParameter();
+  if (type != GeomAbs_BSplineSurface) return;
+  const Handle(Geom_BSplineSurface) b = adaptor_.BSpline();
+  if (b.IsNull() || b->IsUPeriodic() || b->IsVPeriodic()) return;
+  const std::size_t count =
+      static_cast<std::size_t>(b->NbUKnots() - 1) * static_cast<std::size_t>(b->NbVKnots() - 1);
+  if (count == 0 || count > kMaxSpans) return;
+  Spans& s = bspline_.emplace();
+  s.surface = b;
+  s.u_flat.Resize(1, b->NbUPoles() + b->UDegree() + 1, false);
+  s.v_flat.Resize(1, b->NbVPoles() + b->VDegree() + 1, false);
+  b->UKnotSequence(s.u_flat);
+  b->VKnotSequence(s.v_flat);
+  s.poles.Resize(1, b->NbUPoles(), 1, b->NbVPoles(), false);
+  b->Poles(s.poles);
+  if (b->IsURational() || b->IsVRational()) {
+    s.weights.emplace(1, b->NbUPoles(), 1, b->NbVPoles());
+    b->Weights(*s.weights);
+  }
+  for (int i = 1; i <= b->NbUKnots(); ++i) s.u_knots.push_back(b->UKnot(i));
+  for (int i = 1; i <= b->NbVKnots(); ++i) s.v_knots.push_back(b->VKnot(i));
+  spans_.resize(count);
+}
+
+const BSplSLib_Cache& SurfaceEvaluator::span(double u, double v) const {
+  const Spans& s = *bspline_;
+  const std::size_t iu = span_index(s.u_knots, u), iv = span_index(s.v_knots, v);
+  Handle(BSplSLib_Cache)& cache = spans_[iu * (s.v_knots.size() - 1) + iv];
+  if (cache.IsNull()) {
+    const TColStd_Array2OfReal* w = s.weights ? &*s.weights : nullptr;
+    cache = new BSplSLib_Cache(s.surface->UDegree(), false, s.u_flat, s.surface->VDegree(), false,
+                               s.v_flat, w);
+    // Built at the span's centre: no doubt which span it is.
+    cache->BuildCache(0.5 * (s.u_knots[iu] + s.u_knots[iu + 1]),
+                      0.5 * (s.v_knots[iv] + s.v_knots[iv + 1]), s.u_flat, s.v_flat, s.poles, w);
+  }
+  return *cache;
+}
+
+std::vector<double> SurfaceEvaluator::interior_knots(bool u) const {
+  if (!bspline_) return {};
+  const std::vector<double>& k = u ? bspline_->u_knots : bspline_->v_knots;
+  return {k.begin() + 1, k.end() - 1};
+}
+
+template <class F>
+void SurfaceEvaluator::dispatch(double u, double v, F&& f) const {
+  if (bspline_) {
+    f(span(u, v));
+  } else if (near_break(u, v)) {
+    f(GeomAdaptor_Surface(surface_));
+  } else {
+    f(adaptor_);
+  }
 }
 
 bool SurfaceEvaluator::near_break(double u, double v) const {
@@ -69,22 +131,14 @@ bool SurfaceEvaluator::near_break(double u, double v) const {
 
 void SurfaceEvaluator::d0(double u, double v, Point3& p) const {
   gp_Pnt q;
-  if (near_break(u, v)) {
-    GeomAdaptor_Surface(surface_).D0(u, v, q);
-  } else {
-    adaptor_.D0(u, v, q);
-  }
+  dispatch(u, v, [&](const auto& source) { source.D0(u, v, q); });
   p = to_point(q);
 }
 
 void SurfaceEvaluator::d1(double u, double v, Point3& p, Point3& su, Point3& sv) const {
   gp_Pnt q;
   gp_Vec du, dv;
-  if (near_break(u, v)) {
-    GeomAdaptor_Surface(surface_).D1(u, v, q, du, dv);
-  } else {
-    adaptor_.D1(u, v, q, du, dv);
-  }
+  dispatch(u, v, [&](const auto& source) { source.D1(u, v, q, du, dv); });
   p = to_point(q), su = to_point(du), sv = to_point(dv);
 }
 
@@ -92,11 +146,7 @@ void SurfaceEvaluator::d2(double u, double v, Point3& p, Point3& su, Point3& sv,
                           Point3& svv, Point3& suv) const {
   gp_Pnt q;
   gp_Vec du, dv, duu, dvv, duv;
-  if (near_break(u, v)) {
-    GeomAdaptor_Surface(surface_).D2(u, v, q, du, dv, duu, dvv, duv);
-  } else {
-    adaptor_.D2(u, v, q, du, dv, duu, dvv, duv);
-  }
+  dispatch(u, v, [&](const auto& source) { source.D2(u, v, q, du, dv, duu, dvv, duv); });
   p = to_point(q), su = to_point(du), sv = to_point(dv);
   suu = to_point(duu), svv = to_point(dvv), suv = to_point(duv);
 }

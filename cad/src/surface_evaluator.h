@@ -1,15 +1,24 @@
 // Internal to cad/: evaluation of one face's surface, and the two Newton solvers
 // that refine a tessellation's guess on the true surface.
 //
-// GeomAdaptor_Surface caches B-spline spans (mutable state), so an evaluator is
-// owned by one thread (ThreadState) or used only while the model is built.
-// Within a few ulps of a knot the cached span and a freshly located one give
-// results that differ in the last bits, so the answer would depend on what was
-// evaluated before: there a fresh adaptor evaluates, and every evaluation is a
-// function of (u, v) alone (queries are deterministic).
+// A non-periodic B-spline surface is evaluated through one polynomial cache per
+// (u, v) knot span, built on first use and kept; the span of (u, v) is chosen
+// by a fixed rule (knot_i <= u < knot_i+1, end spans extended), so an
+// evaluation is a function of (u, v) alone (queries are deterministic).
+// Other surfaces go through GeomAdaptor_Surface, which caches one span of a
+// B-spline (mutable state): within a few ulps of a knot its cached span and a
+// freshly located one differ in the last bits, so there a fresh adaptor
+// evaluates. Both kinds of cache are mutable state, so an evaluator is owned by
+// one thread (ThreadState) or used only while the model is built.
 #pragma once
 
+#include <BSplSLib_Cache.hxx>
 #include <GeomAdaptor_Surface.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColStd_Array2OfReal.hxx>
+#include <TColgp_Array2OfPnt.hxx>
+#include <optional>
 #include <vector>
 
 #include "rdmesh/geometry.h"
@@ -33,11 +42,31 @@ class SurfaceEvaluator {
   /// their end polynomials; other surfaces stop at their natural bounds).
   void confine(double& u, double& v) const;
   double u_period() const { return u_period_; }
+  /// Whether evaluation goes through B-spline span caches.
+  bool cached() const { return bspline_.has_value(); }
+  /// The interior knots of a cached B-spline along u (or v); empty otherwise.
+  std::vector<double> interior_knots(bool u) const;
   double v_period() const { return v_period_; }
 
  private:
   /// Whether (u, v) is so close to a knot that the span cache's history matters.
   bool near_break(double u, double v) const;
+  /// The B-spline's polynomial cache of the span holding (u, v), built on first use.
+  const BSplSLib_Cache& span(double u, double v) const;
+  /// Calls f(source) with the span cache, the adaptor or a fresh adaptor for (u, v).
+  template <class F>
+  void dispatch(double u, double v, F&& f) const;
+
+  // The piecewise polynomial form of a non-periodic B-spline surface (spans_ empty otherwise).
+  struct Spans {
+    Handle(Geom_BSplineSurface) surface;
+    TColStd_Array1OfReal u_flat, v_flat;   // knots with repetition
+    TColgp_Array2OfPnt poles;
+    std::optional<TColStd_Array2OfReal> weights;
+    std::vector<double> u_knots, v_knots;  // distinct knots, increasing
+  };
+  std::optional<Spans> bspline_;
+  mutable std::vector<Handle(BSplSLib_Cache)> spans_;  // (u span) * nv + (v span)
 
   Handle(Geom_Surface) surface_;
   GeomAdaptor_Surface adaptor_;

@@ -238,6 +238,26 @@ TEST(CadCurves, FollowTheEdgesExactCurves) {
   EXPECT_GT(cached, 0);  // the caches were exercised
 }
 
+// Surfaces evaluate as OpenCASCADE's Geom_Surface does, B-spline span caches
+// included: points to within rounding of the model's size, on the knot lines
+// too, and derivatives to within rounding of their size.
+TEST(CadSurfaces, EvaluateAsTheExactSurfaces) {
+  int cached = 0;
+  for (const char* file : {"occtsample_drill.step", "gmsh_as1-tu-203.stp", "gmsh_Solid_56.step",
+                           "gmsh_t20_data_component8.step", "gmsh_wrenchnut.stp"}) {
+    const auto oracle = load_shared(file);
+    if (!oracle) GTEST_SKIP() << kStep << " is absent";
+    CadReference ref(*oracle);
+    const CadReference::SurfaceCheck c = ref.check_surfaces(25);
+    std::printf("%s: %d faces (%d cached), largest distance %.3g, derivative error %.3g\n", file,
+                c.faces, c.cached_faces, c.max_distance, c.max_derivative_error);
+    EXPECT_LE(c.max_distance, 1e-9 * oracle->bounding_box().diagonal()) << file;
+    EXPECT_LE(c.max_derivative_error, 1e-8) << file;
+    cached += c.cached_faces;
+  }
+  EXPECT_GT(cached, 0);  // the caches were exercised
+}
+
 // Projections of points near the surface land on their face, as close as the
 // face's closest point found by BRepExtrema.
 TEST(CadProject, LandsOnTheFaceAtTheClosestPoint) {

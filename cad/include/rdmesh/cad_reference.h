@@ -66,6 +66,20 @@ class CadReference {
   };
   CurveCheck check_curves(int per_curve);
 
+  /// The oracle's surface evaluation against Geom_Surface::D1 on a `per_side` x
+  /// `per_side` grid over every face's (u, v) box, plus every interior knot line
+  /// of a B-spline crossed at `per_side` points: the largest distance between
+  /// the points, and the largest difference of the derivatives relative to their
+  /// size (on the grid only: at a knot of lower continuity they are one-sided),
+  /// and the number of faces whose evaluation goes through B-spline span caches.
+  struct SurfaceCheck {
+    double max_distance = 0;
+    double max_derivative_error = 0;
+    int cached_faces = 0;
+    int faces = 0;
+  };
+  SurfaceCheck check_surfaces(int per_side);
+
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
