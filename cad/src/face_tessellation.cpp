@@ -4,6 +4,7 @@
 #include <GeomAdaptor_Surface.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <gp_Pnt2d.hxx>
 
@@ -92,6 +93,11 @@ std::vector<double> forced_cuts(const GeomAdaptor_Surface& s, bool u, double lo,
   return cuts;
 }
 
+// A cell's 3 x 3 samples: [i][j] at u = u0, (u0 + u1) / 2, u1 and v likewise.
+using Grid = std::array<std::array<SurfaceSample, 3>, 3>;
+// Which samples of a Grid are already taken (a bit per [i][j], i * 3 + j).
+using Known = unsigned;
+
 class Builder {
  public:
   Builder(FacePatch& f, int face, const SurfaceEvaluator& s, double size,
@@ -116,13 +122,15 @@ class Builder {
     c.nodes.assign(1, {});
     std::vector<int> all(c.segments.size());
     for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
-    build(0, {f_.u0, f_.u1, f_.v0, f_.v1}, all, 0);
+    build(0, {f_.u0, f_.u1, f_.v0, f_.v1}, all, 0, Grid{}, 0);
   }
 
  private:
   // Splits node `index` (cell r) at `cut` along `axis`; both halves are built.
+  // A cut through the middle hands each half the regular samples of r's grid
+  // `g` that it shares (two of its three rows or columns).
   void split(int index, const Box2& r, int axis, double cut, const std::vector<int>& pieces,
-             int depth) {
+             int depth, const Grid* g) {
     const int child = static_cast<int>(f_.cells.nodes.size());
     f_.cells.nodes.resize(child + 2);
     f_.cells.nodes[index].child = child;
@@ -131,8 +139,26 @@ class Builder {
     Box2 lo = r, hi = r;
     (axis == 0 ? lo.u1 : lo.v1) = cut;
     (axis == 0 ? hi.u0 : hi.v0) = cut;
-    build(child, lo, pieces, depth);
-    build(child + 1, hi, pieces, depth);
+    Grid glo{}, ghi{};
+    Known klo = 0, khi = 0;
+    if (g) {
+      // Half `h` (0: lo, 1: hi) takes the parent's lines h and h + 1 as its lines 0 and 2.
+      auto take = [&](Grid& out, Known& known, int h) {
+        for (int a = 0; a < 3; ++a) {
+          for (int line = 0; line < 2; ++line) {
+            const int pi = axis == 0 ? h + line : a, pj = axis == 0 ? a : h + line;
+            const int ci = axis == 0 ? 2 * line : a, cj = axis == 0 ? a : 2 * line;
+            if (!(*g)[pi][pj].regular) continue;
+            out[ci][cj] = (*g)[pi][pj];
+            known |= 1u << (ci * 3 + cj);
+          }
+        }
+      };
+      take(glo, klo, 0);
+      take(ghi, khi, 1);
+    }
+    build(child, lo, pieces, depth, glo, klo);
+    build(child + 1, hi, pieces, depth, ghi, khi);
   }
 
   static bool forced(const std::vector<double>& cuts, double lo, double hi, double& cut) {
@@ -147,14 +173,15 @@ class Builder {
     return found;
   }
 
-  void build(int index, const Box2& r, const std::vector<int>& parent_pieces, int depth) {
+  void build(int index, const Box2& r, const std::vector<int>& parent_pieces, int depth, Grid g,
+             Known known) {
     std::vector<int> pieces;  // the boundary chords whose tubes meet the cell
     for (int p : parent_pieces) {
       if (meets(f_.cells.segments[p], r)) pieces.push_back(p);
     }
     double cut = 0;
-    if (forced(u_cuts_, r.u0, r.u1, cut)) return split(index, r, 0, cut, pieces, depth);
-    if (forced(v_cuts_, r.v0, r.v1, cut)) return split(index, r, 1, cut, pieces, depth);
+    if (forced(u_cuts_, r.u0, r.u1, cut)) return split(index, r, 0, cut, pieces, depth, nullptr);
+    if (forced(v_cuts_, r.v0, r.v1, cut)) return split(index, r, 1, cut, pieces, depth, nullptr);
     UvState state = UvState::boundary;
     const double um = 0.5 * (r.u0 + r.u1), vm = 0.5 * (r.v0 + r.v1);
     if (pieces.empty()) {  // no boundary in the cell: all of it is in, or out
@@ -169,12 +196,16 @@ class Builder {
     // Normals at singular samples (poles, collapsed edges) are kept for the
     // triangles but left out of the split criteria (o): near such points the
     // limit normal may flip from one sample to the next.
+    const double us[3] = {r.u0, um, r.u1}, vs[3] = {r.v0, vm, r.v1};
     Point3 p[3][3], n[3][3], o[3][3];
     for (int i = 0; i < 3; ++i) {
       for (int j = 0; j < 3; ++j) {
-        const double u = r.u0 + 0.5 * i * (r.u1 - r.u0), v = r.v0 + 0.5 * j * (r.v1 - r.v0);
-        const bool regular = sample(s_, u, v, um, vm, p[i][j], n[i][j]);
-        o[i][j] = regular ? n[i][j] : Point3{};
+        SurfaceSample& x = g[i][j];
+        if (!(known & (1u << (i * 3 + j)))) {
+          x.regular = sample(s_, us[i], vs[j], um, vm, x.p, x.n);
+        }
+        p[i][j] = x.p, n[i][j] = x.n;
+        o[i][j] = x.regular ? x.n : Point3{};
       }
     }
     double ext_u = 0, ext_v = 0, turn_u = 0, turn_v = 0, spread = 0;
@@ -209,7 +240,7 @@ class Builder {
       if (turns) axis = turn_u >= turn_v ? 0 : 1;
       // Never a side already a thousand times shorter than the other.
       if (1000 * (axis == 0 ? ext_u : ext_v) < (axis == 0 ? ext_v : ext_u)) axis = 1 - axis;
-      return split(index, r, axis, axis == 0 ? um : vm, pieces, depth + 1);
+      return split(index, r, axis, axis == 0 ? um : vm, pieces, depth + 1, &g);
     }
     if (state == UvState::boundary) {
       f_.cells.set_boundary_leaf(index, r.u0, r.u1, r.v0, r.v1, pieces, *f_.classifier);
@@ -217,7 +248,10 @@ class Builder {
     // A leaf: two triangles split along the (u0, v0)-(u1, v1) diagonal.
     const double cu[2] = {r.u0, r.u1}, cv[2] = {r.v0, r.v1};
     const int tri[2][3][2] = {{{0, 0}, {1, 0}, {1, 1}}, {{0, 0}, {1, 1}, {0, 1}}};
-    for (const auto& corners : tri) {
+    // The grid samples at their edges' midpoints, edge (k, k + 1) for k = 0, 1, 2.
+    const SurfaceSample mids[2][3] = {{g[1][0], g[2][1], g[1][1]}, {g[1][1], g[1][2], g[0][1]}};
+    for (int c = 0; c < 2; ++c) {
+      const auto& corners = tri[c];
       SurfaceTriangle t;
       t.face = face_;
       for (int k = 0; k < 3; ++k) {
@@ -226,7 +260,7 @@ class Builder {
         t.p[k] = p[2 * i][2 * j];
         t.n[k] = n[2 * i][2 * j];
       }
-      measure_triangle(s_, t);
+      measure_triangle(s_, t, mids[c]);
       out_.push_back(t);
     }
   }
@@ -253,23 +287,28 @@ Box3 triangle_box(const SurfaceTriangle& t, double r) {
   return b;
 }
 
-void measure_triangle(const SurfaceEvaluator& s, SurfaceTriangle& t) {
+void measure_triangle(const SurfaceEvaluator& s, SurfaceTriangle& t,
+                      const SurfaceSample* midpoints) {
   const double uc = (t.uv[0][0] + t.uv[1][0] + t.uv[2][0]) / 3;
   const double vc = (t.uv[0][1] + t.uv[1][1] + t.uv[2][1]) / 3;
   Point3 normals[7];
   int count = 0;
   double dev = 0;
-  auto measure = [&](double u, double v, const Point3& flat) {
+  auto measure = [&](double u, double v, const Point3& flat, const SurfaceSample* known) {
     Point3 p;
-    sample(s, u, v, uc, vc, p, normals[count++]);
+    if (known && known->regular) {
+      p = known->p, normals[count++] = known->n;
+    } else {
+      sample(s, u, v, uc, vc, p, normals[count++]);
+    }
     dev = std::max(dev, distance(p, flat));
   };
   for (int k = 0; k < 3; ++k) {
     const int l = (k + 1) % 3;
     measure(0.5 * (t.uv[k][0] + t.uv[l][0]), 0.5 * (t.uv[k][1] + t.uv[l][1]),
-            0.5 * (t.p[k] + t.p[l]));
+            0.5 * (t.p[k] + t.p[l]), midpoints ? &midpoints[k] : nullptr);
   }
-  measure(uc, vc, (1.0 / 3) * (t.p[0] + t.p[1] + t.p[2]));
+  measure(uc, vc, (1.0 / 3) * (t.p[0] + t.p[1] + t.p[2]), nullptr);
   for (int k = 0; k < 3; ++k) {
     if (squared_norm(t.n[k]) == 0) {  // a pole: the limit normal from inside
       Point3 p;

@@ -41,8 +41,19 @@ void tessellate_face(FacePatch& f, int face, const SurfaceEvaluator& surface, do
 /// The box of t's nodes widened by r on every side.
 Box3 triangle_box(const SurfaceTriangle& t, double r);
 
+/// S and its unit normal at one (u, v); `regular` when the normal there is
+/// defined (not a pole): then it depends on (u, v) alone and can be reused.
+struct SurfaceSample {
+  Point3 p, n;
+  bool regular = false;
+};
+
 /// Measures a triangle whose nodes (uv, p, n) are set: deviation, axis, cone.
-/// Evaluates the surface at the triangle's edge midpoints and centroid.
-void measure_triangle(const SurfaceEvaluator& surface, SurfaceTriangle& t);
+/// Evaluates the surface at the triangle's edge midpoints and centroid;
+/// `midpoints`, when given, holds the samples at the midpoints of the edges
+/// (k, k + 1) already taken (0.5 * (uv[k] + uv[k + 1]) exactly), and regular ones
+/// are not evaluated again.
+void measure_triangle(const SurfaceEvaluator& surface, SurfaceTriangle& t,
+                      const SurfaceSample* midpoints = nullptr);
 
 }  // namespace rdmesh::cad
