@@ -4,6 +4,7 @@
 // Gauss-Legendre over fixed cells with a cumulative table, so length() is
 // additive by construction and parameter_at_length() inverts it by Newton.
 #include <Geom_BSplineCurve.hxx>
+#include <Geom_Line.hxx>
 #include <Geom_TrimmedCurve.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TColgp_Array1OfPnt.hxx>
@@ -30,6 +31,9 @@ EdgeCurve::EdgeCurve(Handle(Geom_Curve) curve, double t0, double t1, Point3 q0, 
                      int samples)
     : curve_(std::move(curve)), t0_(t0), t1_(t1), samples_(std::max(samples, 4)) {
   build_span_caches();
+  Handle(Geom_Curve) basis = curve_;
+  while (auto trimmed = Handle(Geom_TrimmedCurve)::DownCast(basis)) basis = trimmed->BasisCurve();
+  straight_ = !Handle(Geom_Line)::DownCast(basis).IsNull();
   gp_Pnt c0, c1;  // the same evaluation as point()'s, so that point(t0) == q0
   evaluate(t0_, c0, nullptr, nullptr);
   evaluate(t1_, c1, nullptr, nullptr);
@@ -159,6 +163,11 @@ int EdgeCurve::samples_over(double ta, double tb) const {
 
 double EdgeCurve::closest(const Point3& p, double ta, double tb) const {
   if (!(tb > ta)) return ta;
+  if (straight_) {  // the foot of p on the chord, which is the curve
+    const Point3 a = point(ta), ab = point(tb) - a;
+    const double l2 = squared_norm(ab);
+    if (l2 > 0) return ta + (tb - ta) * std::clamp(dot(p - a, ab) / l2, 0.0, 1.0);
+  }
   const int n = samples_over(ta, tb);
   const double h = (tb - ta) / n;
   auto d2 = [&](double t) { return squared_norm(point(t) - p); };
@@ -210,6 +219,14 @@ std::vector<double> EdgeCurve::plane_crossings(const Point3& normal, double offs
                                                double tb) const {
   std::vector<double> out;
   if (!(tb >= ta)) return out;
+  if (straight_) {  // g is affine in t: one root, unless the segment lies in the plane
+    const double ga = dot(normal, point(ta)) - offset, gb = dot(normal, point(tb)) - offset;
+    if (ga == 0 && gb == 0) return {ta, tb};
+    if (ga == 0) return {ta};
+    if (gb == 0) return {tb};
+    if ((ga < 0) != (gb < 0)) out.push_back(std::clamp(ta + (tb - ta) * ga / (ga - gb), ta, tb));
+    return out;
+  }
   const int n = samples_over(ta, tb);
   const double h = (tb - ta) / n;
   auto g = [&](double t) { return dot(normal, point(t)) - offset; };

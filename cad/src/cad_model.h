@@ -52,6 +52,8 @@ class EdgeCurve final : public Curve {
   const Handle(Geom_Curve)& geometry() const { return curve_; }
   /// Whether point() reads B-spline span caches rather than the Geom_Curve.
   bool cached() const { return !spans_.empty(); }
+  /// Whether the curve is a straight segment (point() is affine in t).
+  bool straight() const { return straight_; }
 
  private:
   Point3 derivative(double t) const;
@@ -70,6 +72,9 @@ class EdgeCurve final : public Curve {
   std::vector<Handle(BSplCLib_Cache)> spans_;
   std::vector<double> span_start_;
   double spans_end_ = 0;
+  /// A Geom_Line: point(t) is affine in t (the end corrections blend linearly
+  /// too), so closest() and plane_crossings() are solved in closed form.
+  bool straight_ = false;
   double t0_, t1_;
   Point3 d0_, d1_;
   int samples_;
