@@ -31,30 +31,28 @@ class BoxEntry {
   BoxEntry(const Point3& a, const Point3& d) : o_{a.x, a.y, a.z} {
     const double v[3] = {d.x, d.y, d.z};
     for (int k = 0; k < 3; ++k) {
-      inv_[k] = 1.0 / v[k];
-      flat_[k] = !std::isfinite(inv_[k]);  // no extent along k (or too little to invert)
+      inv_[k] = 1.0 / v[k];  // +-inf along an axis the segment does not move along
+      neg_[k] = std::signbit(inv_[k]);
     }
   }
+  // Branch-free slabs: the near and far planes are picked by the direction's
+  // sign once. Along a flat axis the products are -inf/+inf (the start inside
+  // or outside the slab) or NaN (the start on a plane), and max/min with the
+  // running bound first drop a NaN, so the slab is then no constraint.
   double operator()(const Box3& box) const {
-    double t0 = 0, t1 = 1;
     const double lo[3] = {box.lo.x, box.lo.y, box.lo.z}, hi[3] = {box.hi.x, box.hi.y, box.hi.z};
+    double t0 = 0, t1 = 1;
     for (int k = 0; k < 3; ++k) {
-      if (flat_[k]) {
-        if (o_[k] < lo[k] || o_[k] > hi[k]) return -1;
-        continue;
-      }
-      double ta = (lo[k] - o_[k]) * inv_[k], tb = (hi[k] - o_[k]) * inv_[k];
-      if (ta > tb) std::swap(ta, tb);
-      t0 = std::max(t0, ta);
-      t1 = std::min(t1, tb);
-      if (t0 > t1) return -1;
+      const double near = neg_[k] ? hi[k] : lo[k], far = neg_[k] ? lo[k] : hi[k];
+      t0 = std::max(t0, (near - o_[k]) * inv_[k]);
+      t1 = std::min(t1, (far - o_[k]) * inv_[k]);
     }
-    return t0;
+    return t0 <= t1 ? t0 : -1;
   }
 
  private:
   double o_[3], inv_[3];
-  bool flat_[3];
+  bool neg_[3];
 };
 
 // Ray directions for locate(): generic (no axis or diagonal alignment).
