@@ -34,6 +34,7 @@ EdgeCurve::EdgeCurve(Handle(Geom_Curve) curve, double t0, double t1, Point3 q0, 
   Handle(Geom_Curve) basis = curve_;
   while (auto trimmed = Handle(Geom_TrimmedCurve)::DownCast(basis)) basis = trimmed->BasisCurve();
   straight_ = !Handle(Geom_Line)::DownCast(basis).IsNull();
+  circle_ = Handle(Geom_Circle)::DownCast(basis);
   gp_Pnt c0, c1;  // the same evaluation as point()'s, so that point(t0) == q0
   evaluate(t0_, c0, nullptr, nullptr);
   evaluate(t1_, c1, nullptr, nullptr);
@@ -167,6 +168,22 @@ double EdgeCurve::closest(const Point3& p, double ta, double tb) const {
     const Point3 a = point(ta), ab = point(tb) - a;
     const double l2 = squared_norm(ab);
     if (l2 > 0) return ta + (tb - ta) * std::clamp(dot(p - a, ab) / l2, 0.0, 1.0);
+  }
+  if (!circle_.IsNull()) {
+    // |C(t) - p| falls from the angle opposite p's to p's angle around the axis and
+    // rises after it: p's angle when the arc holds it, else the nearer end.
+    const gp_Ax2& ax = circle_->Position();
+    const gp_Pnt& o = ax.Location();
+    const Point3 q = p - Point3{o.X(), o.Y(), o.Z()};
+    const gp_Dir &x = ax.XDirection(), &y = ax.YDirection();
+    const double qx = q.x * x.X() + q.y * x.Y() + q.z * x.Z();
+    const double qy = q.x * y.X() + q.y * y.Y() + q.z * y.Z();
+    if (qx != 0 || qy != 0) {
+      const double turn = 2 * M_PI;
+      const double u = ta + std::fmod(std::fmod(std::atan2(qy, qx) - ta, turn) + turn, turn);
+      if (u <= tb) return u;
+      return squared_norm(point(ta) - p) <= squared_norm(point(tb) - p) ? ta : tb;
+    }
   }
   const int n = samples_over(ta, tb);
   const double h = (tb - ta) / n;

@@ -3,6 +3,7 @@
 
 #include <BRepTopAdaptor_FClass2d.hxx>
 #include <BSplCLib_Cache.hxx>
+#include <Geom_Circle.hxx>
 #include <Geom_Curve.hxx>
 #include <Geom_Surface.hxx>
 #include <Standard_Failure.hxx>
@@ -75,6 +76,10 @@ class EdgeCurve final : public Curve {
   /// A Geom_Line: point(t) is affine in t (the end corrections blend linearly
   /// too), so closest() and plane_crossings() are solved in closed form.
   bool straight_ = false;
+  /// A Geom_Circle (null otherwise): closest() takes the angle of p around its
+  /// axis (the end corrections, within the tolerance, move the answer by a
+  /// second-order amount).
+  Handle(Geom_Circle) circle_;
   double t0_, t1_;
   Point3 d0_, d1_;
   int samples_;
