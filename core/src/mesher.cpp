@@ -86,14 +86,10 @@ MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& criteria,
   double initial = 0, refine = 0;
   int restarts = 0;
   for (bool restart = true; restart;) {
+    refiner = std::make_unique<detail::Refiner>(oracle, criteria, options,
+                                                protect ? &plan : nullptr);
     t = std::chrono::steady_clock::now();
-    // A restart right after the check of the initial balls moves only the
-    // balls that changed, when they are few; otherwise it starts over.
-    if (!refiner || !refiner->update_balls()) {
-      refiner = std::make_unique<detail::Refiner>(oracle, criteria, options,
-                                                  protect ? &plan : nullptr);
-      refiner->insert_initial_points();
-    }
+    refiner->insert_initial_points();
     initial += seconds_since(t);
     t = std::chrono::steady_clock::now();
     refiner->refine(protect && restarts < kMaxRestarts);

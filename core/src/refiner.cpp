@@ -43,7 +43,26 @@ void Refiner::insert_initial_points() {
   Cell_handle hint;
   for (const PatchInfo& patch : oracle_.patches()) {
     for (const Point3& p : oracle_.initial_points(patch.id)) {
-      insert_patch_point(p, patch.id.value, hint);
+      if (plan_) {
+        // Nothing is ever inserted inside a protecting ball.
+        if (!outside_balls(p, hint)) continue;
+      } else {
+        // A patch point close to a curve would sit in the balls of its restricted
+        // edges and force tiny arcs; the curve samples cover that area instead.
+        bool near_curve = false;
+        for (const CurveState& c : curves_) {
+          const double t = c.curve->closest(p, c.info.t_begin, c.info.t_end);
+          const double keep_out = 0.25 * criteria_.edge_size(p);
+          near_curve = near_curve || squared_norm(c.curve->point(t) - p) < keep_out * keep_out;
+        }
+        if (near_curve) continue;
+      }
+      const Vertex_handle v = tr_.insert(to_weighted(p), hint);
+      if (v == Vertex_handle() || v->info().dim != FeatureDim::kVolume) continue;  // a duplicate
+      v->info().dim = FeatureDim::kPatch;
+      v->info().feature = patch.id.value;
+      hint = v->cell();
+      ++stats_.initial_points;
     }
   }
   if (tr_.dimension() < 3 && options_.surface_only) {
@@ -63,51 +82,12 @@ void Refiner::insert_initial_points() {
                       std::to_string(stats_.initial_points) +
                       " points): cannot start refinement");
   }
-  init_new_cells();
-  if (plan_) return;  // the balls are D|L already: no arc is ever refined
-  for (std::size_t j = 0; j < curves_.size(); ++j) {
-    CurveState& c = curves_[j];
-    for (auto a = c.samples.begin(); c.has_next(a); ++a) create_arc(static_cast<int>(j), a, true);
-  }
-}
-
-bool Refiner::insert_patch_point(const Point3& p, int patch, Cell_handle& hint) {
-  if (plan_) {
-    // Nothing is ever inserted inside a protecting ball.
-    if (!outside_balls(p, hint)) return false;
-  } else {
-    // A patch point close to a curve would sit in the balls of its restricted
-    // edges and force tiny arcs; the curve samples cover that area instead.
-    bool near_curve = false;
-    for (const CurveState& c : curves_) {
-      const double t = c.curve->closest(p, c.info.t_begin, c.info.t_end);
-      const double keep_out = 0.25 * criteria_.edge_size(p);
-      near_curve = near_curve || squared_norm(c.curve->point(t) - p) < keep_out * keep_out;
-    }
-    if (near_curve) return false;
-  }
-  const Vertex_handle v = tr_.insert(to_weighted(p), hint);
-  if (v == Vertex_handle() || v->info().dim != FeatureDim::kVolume) return false;  // a duplicate
-  v->info().dim = FeatureDim::kPatch;
-  v->info().feature = patch;
-  hint = v->cell();
-  ++stats_.initial_points;
-  return true;
-}
-
-void Refiner::init_new_cells() {
-  const std::uint32_t first = next_stamp_;
   // Labels spread from cell to neighboring cell (init_cell's `from`); the
   // first cell of each connected sweep is located from scratch.
   std::vector<std::pair<Cell_handle, Cell_handle>> sweep;  // (cell, labeled neighbor)
   for (auto c = tr_.all_cells_begin(); c != tr_.all_cells_end(); ++c) {
     if (c->info().stamp != 0) continue;
-    Cell_handle from;  // a labeled neighbor, if any
-    for (int i = 0; i < 4 && from == Cell_handle(); ++i) {
-      const Cell_handle n = c->neighbor(i);
-      if (n->info().stamp != 0 && !tr_.is_infinite(n)) from = n;
-    }
-    sweep.emplace_back(c, from);
+    sweep.emplace_back(c, Cell_handle());
     while (!sweep.empty()) {
       const auto [d, from] = sweep.back();
       sweep.pop_back();
@@ -118,20 +98,21 @@ void Refiner::init_new_cells() {
       }
     }
   }
-  // The facets with a new cell on either side (the newer side holds the larger stamp).
   for (auto c = tr_.all_cells_begin(); c != tr_.all_cells_end(); ++c) {
     for (int i = 0; i < 4; ++i) {
-      const std::uint32_t s = c->neighbor(i)->info().stamp;
-      if (s > c->info().stamp && s >= first) update_facet(c, i);
+      if (c->neighbor(i)->info().stamp > c->info().stamp) update_facet(c, i);
     }
-    if (c->info().stamp < first) continue;
     const double badness = cell_badness(c);
     if (badness > 0) cell_queue_.push({badness, c->info().stamp, c, -1});
+  }
+  if (plan_) return;  // the balls are D|L already: no arc is ever refined
+  for (std::size_t j = 0; j < curves_.size(); ++j) {
+    CurveState& c = curves_[j];
+    for (auto a = c.samples.begin(); c.has_next(a); ++a) create_arc(static_cast<int>(j), a, true);
   }
 }
 
 void Refiner::refine(bool stop_on_conflict) {
-  stopped_at_check_ = false;
   if (stop_on_conflict && plan_) {
     // The facets between the balls alone already show most balls that reach
     // a patch their feature does not bound (R3), and most overlaps that stray
@@ -144,10 +125,7 @@ void Refiner::refine(bool stop_on_conflict) {
         }
       }
     }
-    if (!conflicts_.empty()) {
-      stopped_at_check_ = true;
-      return;
-    }
+    if (!conflicts_.empty()) return;
   }
   for (;;) {
     if (!arc_queue_.empty()) {

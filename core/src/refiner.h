@@ -47,14 +47,6 @@ class Refiner {
   /// Balls that reached into a patch their feature does not bound (R3 could
   /// not be met there): shrinking them and refining again removes the conflict.
   const std::vector<BallRef>& conflicts() const { return conflicts_; }
-  /// After refine(true) returned at its check of the initial balls (before any
-  /// refinement) and the plan changed: replaces the balls that changed, and
-  /// the patch points they now cover or uncover, and labels the new cells,
-  /// leaving the rest of the triangulation as it is; the result is the
-  /// triangulation insert_initial_points() would build for the new plan. False
-  /// (nothing done) when refinement had begun, or when so many balls changed
-  /// that a fresh build is faster: then start a new Refiner.
-  bool update_balls();
   /// The tetrahedra of D|O, the triangles of D|S and the edges of D|L, labelled.
   TetMesh extract_mesh();
 
@@ -128,34 +120,9 @@ class Refiner {
   /// Records b in conflicts_ once.
   void add_conflict(const BallRef& b);
 
-  /// Labels the cells created since the last call (stamp 0), spreading from
-  /// labeled neighbors, then computes the facets they bound and queues the bad ones.
-  void init_new_cells();
-  /// Inserts patch point p unless it lies in a ball (or, without balls, near a
-  /// curve); false when it was not inserted (or was already there).
-  bool insert_patch_point(const Point3& p, int patch, Cell_handle& hint);
-
   // --- D|L bookkeeping (restricted_curves.cpp) ---
   void load_curves();
   void insert_corners_and_curve_samples();
-  /// A ball of the plan, as inserted.
-  struct PlannedBall {
-    Point3 point;
-    double radius;
-    FeatureDim dim;
-    int feature;
-    double t;
-  };
-  /// Every ball of the plan once: the corners' (index = CornerId - 1), then
-  /// each curve's own balls from first_ball[j] on (a corner's ball serves all
-  /// its curves, a closed curve's first sample its repeated last one).
-  std::vector<PlannedBall> planned_balls(std::vector<std::size_t>& first_ball) const;
-  /// Inserts balls[k] for k in `which` (in spatial order) and sets vertex[k].
-  void insert_balls(const std::vector<PlannedBall>& balls, std::vector<std::size_t> which,
-                    std::vector<Vertex_handle>& vertex);
-  /// Points every curve's samples at the vertices of its balls.
-  void bind_curve_samples(const std::vector<Vertex_handle>& vertex,
-                          const std::vector<std::size_t>& first_ball);
   /// Protecting balls: the plan's corners and curve samples as weighted points.
   void insert_protecting_balls();
   /// A point that may be inserted: outside every protecting ball.
@@ -202,7 +169,6 @@ class Refiner {
   MeshOptions options_;
   const ProtectionPlan* plan_;  ///< null: RR-7912's R1/R2 on the curves
   std::vector<BallRef> conflicts_;
-  bool stopped_at_check_ = false;  ///< refine(true) returned before refining anything
   Box3 clip_box_;              ///< oracle box with a margin: rays are clipped to it
   double min_size_sq_;         ///< termination guard (squared)
   double facet_shape_bound_;   ///< 4 sin^2(facet angle): min edge^2 / R^2 below it is bad

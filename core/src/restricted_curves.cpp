@@ -88,13 +88,25 @@ void Refiner::insert_corners_and_curve_samples() {
   }
 }
 
-std::vector<Refiner::PlannedBall> Refiner::planned_balls(std::vector<std::size_t>& first_ball) const {
-  std::vector<PlannedBall> balls;
+void Refiner::insert_protecting_balls() {
+  // Every ball once (a corner's ball for all its curves, a closed curve's first
+  // sample for its repeated last one), inserted in spatial order: the walks
+  // from one insertion to the next become short. The regular triangulation
+  // does not depend on the order; the creation order of its cells, which
+  // refinement follows on ties, does.
+  struct Ball {
+    Point3 point;
+    double radius;
+    FeatureDim dim;
+    int feature;
+    double t;
+  };
+  std::vector<Ball> balls;
   for (std::size_t q = 0; q < corners_.size(); ++q) {
     balls.push_back({corners_[q].point, plan_->corner_radius[q], FeatureDim::kCorner,
                      static_cast<int>(q) + 1, 0});
   }
-  first_ball.assign(curves_.size(), 0);
+  std::vector<std::size_t> first_ball(curves_.size());  // of each curve's own balls
   for (std::size_t j = 0; j < curves_.size(); ++j) {
     const std::vector<BallSample>& s = plan_->curves[j].samples;
     first_ball[j] = balls.size();
@@ -103,25 +115,20 @@ std::vector<Refiner::PlannedBall> Refiner::planned_balls(std::vector<std::size_t
       balls.push_back({s[i].point, s[i].radius, FeatureDim::kCurve, static_cast<int>(j) + 1, s[i].t});
     }
   }
-  return balls;
-}
-
-void Refiner::insert_balls(const std::vector<PlannedBall>& balls, std::vector<std::size_t> which,
-                           std::vector<Vertex_handle>& vertex) {
-  // In spatial order: the walks from one insertion to the next become short.
-  // The regular triangulation does not depend on the order; the creation
-  // order of its cells, which refinement follows on ties, does.
-  std::vector<Kernel::Point_3> points(balls.size());
-  for (const std::size_t k : which) {
-    points[k] = Kernel::Point_3(balls[k].point.x, balls[k].point.y, balls[k].point.z);
-  }
+  std::vector<Kernel::Point_3> points;
+  for (const Ball& b : balls) points.emplace_back(b.point.x, b.point.y, b.point.z);
+  std::vector<std::size_t> order(balls.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
   using SortTraits =
       CGAL::Spatial_sort_traits_adapter_3<Kernel, CGAL::Pointer_property_map<Kernel::Point_3>::type>;
-  CGAL::spatial_sort(which.begin(), which.end(), SortTraits(CGAL::make_property_map(points)));
+  CGAL::spatial_sort(order.begin(), order.end(), SortTraits(CGAL::make_property_map(points)));
+
+  std::vector<Vertex_handle> vertex(balls.size());
   Cell_handle hint;
-  for (const std::size_t k : which) {
-    const PlannedBall& b = balls[k];
-    const Vertex_handle v = tr_.insert(Weighted_point(points[k], b.radius * b.radius), hint);
+  for (const std::size_t k : order) {
+    const Ball& b = balls[k];
+    const Vertex_handle v =
+        tr_.insert(Weighted_point(points[k], b.radius * b.radius), hint);
     if (v == Vertex_handle() || v->info().dim != FeatureDim::kVolume) {
       throw InternalError("protecting ball at (" + std::to_string(b.point.x) + ", " +
                           std::to_string(b.point.y) + ", " + std::to_string(b.point.z) +
@@ -134,14 +141,9 @@ void Refiner::insert_balls(const std::vector<PlannedBall>& balls, std::vector<st
     hint = v->cell();
     vertex[k] = v;
   }
-}
-
-void Refiner::bind_curve_samples(const std::vector<Vertex_handle>& vertex,
-                                 const std::vector<std::size_t>& first_ball) {
   for (std::size_t j = 0; j < curves_.size(); ++j) {
     CurveState& c = curves_[j];
     const std::vector<BallSample>& s = plan_->curves[j].samples;
-    c.samples.clear();
     for (std::size_t i = 0; i < s.size(); ++i) {
       Vertex_handle v;
       if (c.info.closed) {
@@ -156,16 +158,6 @@ void Refiner::bind_curve_samples(const std::vector<Vertex_handle>& vertex,
       c.samples[s[i].t] = CurveSample{v, to_point3(v->point())};
     }
   }
-}
-
-void Refiner::insert_protecting_balls() {
-  std::vector<std::size_t> first_ball;
-  const std::vector<PlannedBall> balls = planned_balls(first_ball);
-  std::vector<std::size_t> all(balls.size());
-  for (std::size_t k = 0; k < all.size(); ++k) all[k] = k;
-  std::vector<Vertex_handle> vertex(balls.size());
-  insert_balls(balls, std::move(all), vertex);
-  bind_curve_samples(vertex, first_ball);
   // A vertex hidden by a later ball would vanish from the triangulation.
   if (tr_.number_of_vertices() != balls.size()) {
     throw InternalError("protecting balls hide one another (" + std::to_string(balls.size()) +
