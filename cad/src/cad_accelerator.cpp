@@ -101,6 +101,7 @@ void build_accelerator(CadOracle::Model& m) {
     }
   }
   m.candidate_tree = TriangleBvh(boxes);
+  m.occupied = OccupancyGrid(m.box, boxes);
   if (untessellated > 0) {
     m.log.push_back(std::to_string(untessellated) +
                     " face(s) without a tessellation: intersected by OpenCASCADE only");

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "face_tessellation.h"
+#include "occupancy_grid.h"
 #include "rdmesh/cad_oracle.h"
 #include "rdmesh/detail/triangle_bvh.h"
 #include "rdmesh/errors.h"
@@ -168,6 +169,7 @@ struct CadOracle::Model {
   /// of its triangles is met first), and an untessellated face as a whole.
   std::vector<cad::Candidate> candidates;
   TriangleBvh candidate_tree;
+  cad::OccupancyGrid occupied;  ///< the grid cells the candidates' boxes meet
   std::vector<PatchInfo> patches;
   std::vector<std::vector<Point3>> seeds;  // index = patch id - 1
   std::vector<CurveInfo> curve_infos;

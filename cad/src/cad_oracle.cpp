@@ -91,7 +91,7 @@ std::optional<Clipped> clip_to_box(const Box3& box, const Point3& a, const Point
 std::optional<cad::RayHit> first_hit(const CadOracle::Model& m, std::uint64_t serial,
                                      const Point3& a, const Point3& b) {
   const std::optional<Clipped> c = clip_to_box(m.box, a, b);
-  if (!c) return std::nullopt;
+  if (!c || !m.occupied.may_meet(c->a, c->b)) return std::nullopt;
   const Point3 d = c->b - c->a;
   const double len = norm(d);
   if (!(len > 0)) return std::nullopt;
