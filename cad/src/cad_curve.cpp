@@ -30,9 +30,9 @@ Point3 to_point(const gp_XYZ& p) { return {p.X(), p.Y(), p.Z()}; }
 EdgeCurve::EdgeCurve(Handle(Geom_Curve) curve, double t0, double t1, Point3 q0, Point3 q1,
                      int samples)
     : curve_(std::move(curve)), t0_(t0), t1_(t1), samples_(std::max(samples, 4)) {
-  build_span_caches();
   Handle(Geom_Curve) basis = curve_;
   while (auto trimmed = Handle(Geom_TrimmedCurve)::DownCast(basis)) basis = trimmed->BasisCurve();
+  build_span_caches(basis);
   straight_ = !Handle(Geom_Line)::DownCast(basis).IsNull();
   circle_ = Handle(Geom_Circle)::DownCast(basis);
   gp_Pnt c0, c1;  // the same evaluation as point()'s, so that point(t0) == q0
@@ -48,9 +48,7 @@ EdgeCurve::EdgeCurve(Handle(Geom_Curve) curve, double t0, double t1, Point3 q0, 
   }
 }
 
-void EdgeCurve::build_span_caches() {
-  Handle(Geom_Curve) basis = curve_;
-  while (auto trimmed = Handle(Geom_TrimmedCurve)::DownCast(basis)) basis = trimmed->BasisCurve();
+void EdgeCurve::build_span_caches(const Handle(Geom_Curve) & basis) {
   const Handle(Geom_BSplineCurve) b = Handle(Geom_BSplineCurve)::DownCast(basis);
   // A periodic curve's parameters may wrap past its knots: left to Geom_Curve.
   if (b.IsNull() || b->IsPeriodic()) return;

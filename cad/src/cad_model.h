@@ -54,15 +54,14 @@ class EdgeCurve final : public Curve {
   const Handle(Geom_Curve)& geometry() const { return curve_; }
   /// Whether point() reads B-spline span caches rather than the Geom_Curve.
   bool cached() const { return !spans_.empty(); }
-  /// Whether the curve is a straight segment (point() is affine in t).
-  bool straight() const { return straight_; }
 
  private:
   Point3 derivative(double t) const;
   /// The curve's own C(t), C'(t) and (when d2) C''(t): from the span's cache for
   /// a B-spline, else from the Geom_Curve.
   void evaluate(double t, gp_Pnt& p, gp_Vec* d1, gp_Vec* d2) const;
-  void build_span_caches();
+  /// Fills spans_ when `basis` (curve_ without its trimming) is a non-periodic B-spline.
+  void build_span_caches(const Handle(Geom_Curve) & basis);
   double speed_integral(double u, double v) const;  // Gauss-Legendre on one cell
   double arc(double t) const;                       // length from t0 to t
   int samples_over(double ta, double tb) const;

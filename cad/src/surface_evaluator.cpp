@@ -63,10 +63,14 @@ SurfaceEvaluator::SurfaceEvaluator(const FacePatch& f) : surface_(f.surface), ad
   if (adaptor_.IsUPeriodic()) u_period_ = adaptor_.UPeriod();
   if (adaptor_.IsVPeriodic()) v_period_ = adaptor_.VPeriod();
   u_mid_ = 0.5 * (f.u0 + f.u1), v_mid_ = 0.5 * (f.v0 + f.v1);
+  if (type == GeomAbs_BSplineSurface) build_spans();
+  if (bspline_) return;  // the span caches answer every (u, v): near_break() is never asked
   u_breaks_ = breaks(adaptor_, true);
   v_breaks_ = breaks(adaptor_, false);
   u_first_ = adaptor_.FirstUParameter(), v_first_ = adaptor_.FirstVParameter();
-  if (type != GeomAbs_BSplineSurface) return;
+}
+
+void SurfaceEvaluator::build_spans() {
   const Handle(Geom_BSplineSurface) b = adaptor_.BSpline();
   if (b.IsNull() || b->IsUPeriodic() || b->IsVPeriodic()) return;
   const std::size_t count =

@@ -51,6 +51,8 @@ class SurfaceEvaluator {
  private:
   /// Whether (u, v) is so close to a knot that the span cache's history matters.
   bool near_break(double u, double v) const;
+  /// Sets bspline_ up for a non-periodic B-spline with at most kMaxSpans spans.
+  void build_spans();
   /// The B-spline's polynomial cache of the span holding (u, v), built on first use.
   const BSplSLib_Cache& span(double u, double v) const;
   /// Calls f(source) with the span cache, the adaptor or a fresh adaptor for (u, v).
