@@ -180,20 +180,29 @@ INSTANTIATE_TEST_SUITE_P(Files, SharedStep,
 // pcurves with narrow excursions (Solid_56: edges of tolerance 4e-3 whose
 // pcurves dip 0.1 into the face between sparse samples) and on a face whose
 // (u, v) box spans two periods (the bottle's thread).
-// Runs a CadReference cell check on each file: no disagreement, and more than
-// `per_patch` points compared per patch. False when the data is absent.
+// Calls check(file, oracle, reference) for each shared file; false when the
+// data is absent (the caller skips).
 template <class Check>
-bool expect_cells_agree(std::initializer_list<const char*> files, int per_patch, Check check) {
+bool for_each_shared(std::initializer_list<const char*> files, Check check) {
   for (const char* file : files) {
     const auto oracle = load_shared(file);
     if (!oracle) return false;
     CadReference ref(*oracle);
+    check(file, *oracle, ref);
+  }
+  return true;
+}
+
+// Runs a CadReference cell check on each file: no disagreement, and more than
+// `per_patch` points compared per patch. False when the data is absent.
+template <class Check>
+bool expect_cells_agree(std::initializer_list<const char*> files, int per_patch, Check check) {
+  return for_each_shared(files, [&](const char* file, const CadOracle& oracle, CadReference& ref) {
     const CadReference::CellCheck c = check(ref);
     std::printf("%s: %d points compared, %d disagree\n", file, c.compared, c.disagree);
     EXPECT_EQ(c.disagree, 0) << file;
-    EXPECT_GT(c.compared, per_patch * static_cast<int>(oracle->patches().size())) << file;
-  }
-  return true;
+    EXPECT_GT(c.compared, per_patch * static_cast<int>(oracle.patches().size())) << file;
+  });
 }
 
 TEST(CadCells, ClassifyLikeTheFaceClassifier) {
@@ -224,16 +233,16 @@ TEST(CadCells, FollowTheExactPcurvesNearTheBoundary) {
 // that make them meet the corners).
 TEST(CadCurves, FollowTheEdgesExactCurves) {
   int cached = 0;
-  for (const char* file : {"occtsample_drill.step", "gmsh_Zylkopf.stp", "gmsh_Kurbelwelle.stp",
-                           "nist_ctc_01_asme1_ap242-e1.stp", "gmsh_as1-tu-203.stp"}) {
-    const auto oracle = load_shared(file);
-    if (!oracle) GTEST_SKIP() << kStep << " is absent";
-    CadReference ref(*oracle);
-    const CadReference::CurveCheck c = ref.check_curves(40);
-    std::printf("%s: %d curves (%d cached), largest excess %.3g\n", file, c.curves,
-                c.cached_curves, c.max_excess);
-    EXPECT_LE(c.max_excess, 1e-9 * oracle->bounding_box().diagonal()) << file;
-    cached += c.cached_curves;
+  if (!for_each_shared({"occtsample_drill.step", "gmsh_Zylkopf.stp", "gmsh_Kurbelwelle.stp",
+                        "nist_ctc_01_asme1_ap242-e1.stp", "gmsh_as1-tu-203.stp"},
+                       [&](const char* file, const CadOracle& oracle, CadReference& ref) {
+                         const CadReference::CurveCheck c = ref.check_curves(40);
+                         std::printf("%s: %d curves (%d cached), largest excess %.3g\n", file,
+                                     c.curves, c.cached_curves, c.max_excess);
+                         EXPECT_LE(c.max_excess, 1e-9 * oracle.bounding_box().diagonal()) << file;
+                         cached += c.cached_curves;
+                       })) {
+    GTEST_SKIP() << kStep << " is absent";
   }
   EXPECT_GT(cached, 0);  // the caches were exercised
 }
@@ -243,17 +252,20 @@ TEST(CadCurves, FollowTheEdgesExactCurves) {
 // too, and derivatives to within rounding of their size.
 TEST(CadSurfaces, EvaluateAsTheExactSurfaces) {
   int cached = 0;
-  for (const char* file : {"occtsample_drill.step", "gmsh_as1-tu-203.stp", "gmsh_Solid_56.step",
-                           "gmsh_t20_data_component8.step", "gmsh_wrenchnut.stp"}) {
-    const auto oracle = load_shared(file);
-    if (!oracle) GTEST_SKIP() << kStep << " is absent";
-    CadReference ref(*oracle);
-    const CadReference::SurfaceCheck c = ref.check_surfaces(25);
-    std::printf("%s: %d faces (%d cached), largest distance %.3g, derivative error %.3g\n", file,
-                c.faces, c.cached_faces, c.max_distance, c.max_derivative_error);
-    EXPECT_LE(c.max_distance, 1e-9 * oracle->bounding_box().diagonal()) << file;
-    EXPECT_LE(c.max_derivative_error, 1e-8) << file;
-    cached += c.cached_faces;
+  if (!for_each_shared({"occtsample_drill.step", "gmsh_as1-tu-203.stp", "gmsh_Solid_56.step",
+                        "gmsh_t20_data_component8.step", "gmsh_wrenchnut.stp"},
+                       [&](const char* file, const CadOracle& oracle, CadReference& ref) {
+                         const CadReference::SurfaceCheck c = ref.check_surfaces(25);
+                         std::printf("%s: %d faces (%d cached), largest distance %.3g, "
+                                     "derivative error %.3g\n",
+                                     file, c.faces, c.cached_faces, c.max_distance,
+                                     c.max_derivative_error);
+                         EXPECT_LE(c.max_distance, 1e-9 * oracle.bounding_box().diagonal())
+                             << file;
+                         EXPECT_LE(c.max_derivative_error, 1e-8) << file;
+                         cached += c.cached_faces;
+                       })) {
+    GTEST_SKIP() << kStep << " is absent";
   }
   EXPECT_GT(cached, 0);  // the caches were exercised
 }
