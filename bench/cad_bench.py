@@ -101,7 +101,10 @@ def tet_measures(nodes, tets):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("build")
-    ap.add_argument("step_dir", nargs="?", default="/work/shared/data/step")
+    # The shared data beside the checkout (../shared/data), or $RDMESH_DATA_DIR.
+    data = os.environ.get("RDMESH_DATA_DIR") or os.path.join(
+        os.path.dirname(os.path.abspath(__file__)), "..", "..", "shared", "data")
+    ap.add_argument("step_dir", nargs="?", default=os.path.normpath(os.path.join(data, "step")))
     ap.add_argument("--timeout", type=float, default=120)
     ap.add_argument("--divisions", type=float, default=20)
     ap.add_argument("--repeat", type=int, default=3,

@@ -8,6 +8,7 @@
 
 #include "rdmesh/cad_oracle.h"
 #include "rdmesh/errors.h"
+#include "shared_data.h"
 
 namespace rdmesh {
 namespace {
@@ -19,8 +20,6 @@ fs::path scratch() {
   fs::create_directories(dir);
   return dir;
 }
-
-const fs::path kData = "/work/shared/data";  // optional: skipped when absent
 
 struct RoundTrip {
   CadTestShape shape;
@@ -85,7 +84,6 @@ TEST(CadFiles, BadInputIsAnInputError) {
 }
 
 TEST(CadFiles, ReadsTheSharedStepAndBrepFiles) {
-  if (!fs::exists(kData)) GTEST_SKIP() << kData << " is absent";
   struct Expected {
     const char* file;
     int solids, faces;
@@ -95,7 +93,8 @@ TEST(CadFiles, ReadsTheSharedStepAndBrepFiles) {
                             Expected{"step/cadquery_red_cube_blue_cylinder.step", 2, 9},
                             Expected{"brep/occt_bottle.brep", 1, -1}}) {
     SCOPED_TRACE(e.file);
-    const auto o = load_cad_file((kData / e.file).string());
+    RDMESH_REQUIRE_SHARED_DATA(path, e.file);
+    const auto o = load_cad_file(path);
     EXPECT_EQ(static_cast<int>(o->subdomains().size()), e.solids);
     if (e.faces > 0) EXPECT_EQ(static_cast<int>(o->patches().size()), e.faces);
     EXPECT_GT(o->exact_volume(), 0);

@@ -18,16 +18,17 @@
 #include "same_answers_on_threads.h"
 #include "rdmesh/cad_oracle.h"
 #include "rdmesh/cad_reference.h"
+#include "shared_data.h"
 
 namespace rdmesh {
 namespace {
 
-const std::filesystem::path kStep = "/work/shared/data/step";
-
+// A shared STEP file (a path relative to the data folder's step/), or nullptr
+// when it is absent: the caller then ends with RDMESH_MISSING_SHARED_DATA.
 std::unique_ptr<CadOracle> load_shared(const char* file) {
-  const std::filesystem::path path = kStep / file;
-  if (!std::filesystem::exists(path)) return nullptr;
-  return load_cad_file(path.string());
+  const std::string path = test::shared_data(std::string("step/") + file);
+  if (path.empty()) return nullptr;
+  return load_cad_file(path);
 }
 
 /// `count` segments: a third between two random points of the box, the others
@@ -87,7 +88,7 @@ class SharedStep : public ::testing::TestWithParam<const char*> {};
 // missed by OpenCASCADE <= 4, anything else 0.
 TEST_P(SharedStep, NearestCrossingMatchesOpenCascade) {
   const auto oracle = load_shared(GetParam());
-  if (!oracle) GTEST_SKIP() << kStep << " is absent";
+  if (!oracle) RDMESH_MISSING_SHARED_DATA("step/ files");
   CadReference ref(*oracle);
   const double tol = oracle->tolerance();
   const auto on_its_face = [&](const CadOracle::Crossing& c) {
@@ -138,7 +139,7 @@ TEST_P(SharedStep, NearestCrossingMatchesOpenCascade) {
 // lands on the patch (the shared suite, without its curve checks).
 TEST_P(SharedStep, PassesOracleConformanceOfSurfaces) {
   const auto oracle = load_shared(GetParam());
-  if (!oracle) GTEST_SKIP() << kStep << " is absent";
+  if (!oracle) RDMESH_MISSING_SHARED_DATA("step/ files");
   expect_oracle_conformance(*oracle, 400, 3, false);
 }
 
@@ -151,7 +152,7 @@ TEST_P(SharedStep, PassesOracleConformanceOfSurfaces) {
 // locate_from as often as with locate.
 TEST_P(SharedStep, LocateFromAKnownPointAgreesWithLocate) {
   const auto oracle = load_shared(GetParam());
-  if (!oracle) GTEST_SKIP() << kStep << " is absent";
+  if (!oracle) RDMESH_MISSING_SHARED_DATA("step/ files");
   int differ = 0, crossed = 0;
   for (const auto& [a, b] : segments(*oracle, 1500, 23)) {
     const SubdomainId la = oracle->locate(a), lb = oracle->locate(b);
@@ -211,7 +212,7 @@ TEST(CadCells, ClassifyLikeTheFaceClassifier) {
            "gmsh_Zylkopf.stp", "nist_stc_06_asme1_ap242-e3.stp", "gmsh_Solid_56.step",
            "../brep/occt_bottle.brep"},
           100, [](CadReference& ref) { return ref.check_cells(200, 3); })) {
-    GTEST_SKIP() << kStep << " is absent";
+    RDMESH_MISSING_SHARED_DATA("step/ files");
   }
 }
 
@@ -224,7 +225,7 @@ TEST(CadCells, FollowTheExactPcurvesNearTheBoundary) {
                            "../brep/occt_bottle.brep"},
                           50,
                           [](CadReference& ref) { return ref.check_cells_near_pcurves(300, 5); })) {
-    GTEST_SKIP() << kStep << " is absent";
+    RDMESH_MISSING_SHARED_DATA("step/ files");
   }
 }
 
@@ -242,7 +243,7 @@ TEST(CadCurves, FollowTheEdgesExactCurves) {
                          EXPECT_LE(c.max_excess, 1e-9 * oracle.bounding_box().diagonal()) << file;
                          cached += c.cached_curves;
                        })) {
-    GTEST_SKIP() << kStep << " is absent";
+    RDMESH_MISSING_SHARED_DATA("step/ files");
   }
   EXPECT_GT(cached, 0);  // the caches were exercised
 }
@@ -265,7 +266,7 @@ TEST(CadSurfaces, EvaluateAsTheExactSurfaces) {
                          EXPECT_LE(c.max_derivative_error, 1e-8) << file;
                          cached += c.cached_faces;
                        })) {
-    GTEST_SKIP() << kStep << " is absent";
+    RDMESH_MISSING_SHARED_DATA("step/ files");
   }
   EXPECT_GT(cached, 0);  // the caches were exercised
 }
@@ -274,7 +275,7 @@ TEST(CadSurfaces, EvaluateAsTheExactSurfaces) {
 // face's closest point found by BRepExtrema.
 TEST(CadProject, LandsOnTheFaceAtTheClosestPoint) {
   const auto oracle = load_shared("gmsh_wrenchnut.stp");
-  if (!oracle) GTEST_SKIP() << kStep << " is absent";
+  if (!oracle) RDMESH_MISSING_SHARED_DATA("step/ files");
   CadReference ref(*oracle);
   const double tol = oracle->tolerance(), diag = oracle->bounding_box().diagonal();
   std::mt19937 rng(5);
@@ -303,7 +304,7 @@ TEST(CadProject, LandsOnTheFaceAtTheClosestPoint) {
 TEST(CadOtherPatches, MatchTheNearestOtherFace) {
   for (const char* file : {"gmsh_Zylkopf.stp", "occtsample_drill.step"}) {
     const auto oracle = load_shared(file);
-    if (!oracle) GTEST_SKIP() << kStep << " is absent";
+    if (!oracle) RDMESH_MISSING_SHARED_DATA("step/ files");
     CadReference ref(*oracle);
     const double tol = 10 * oracle->tolerance(), diag = oracle->bounding_box().diagonal();
     const double limit = 0.03 * diag;
@@ -342,7 +343,7 @@ TEST(CadIntersector, AnswersDoNotDependOnQueryHistory) {
   for (const char* file : {"gmsh_wrenchnut.stp", "gmsh_t20_data_component8.step",
                            "occtsample_drill.step", "gmsh_periodic_u_cst.step"}) {
     const auto oracle = load_shared(file);
-    if (!oracle) GTEST_SKIP() << kStep << " is absent";
+    if (!oracle) RDMESH_MISSING_SHARED_DATA("step/ files");
     const auto again = load_shared(file);
     const auto list = segments(*oracle, 1500, 13);
     auto answer = [&](const CadOracle& o, std::size_t i) {
@@ -375,7 +376,7 @@ TEST(CadIntersector, AnswersDoNotDependOnQueryHistory) {
 // the box had no digits left: wrenchnut's refinement ran away to 210k vertices.)
 TEST(CadIntersector, FarEndsGiveTheCrossingsOfThePartInTheBox) {
   const auto oracle = load_shared("gmsh_wrenchnut.stp");
-  if (!oracle) GTEST_SKIP() << kStep << " is absent";
+  if (!oracle) RDMESH_MISSING_SHARED_DATA("step/ files");
   const double tol = oracle->tolerance();
   const Box3 box = oracle->bounding_box();
   auto same = [&](const std::optional<SurfaceHit>& x, const std::optional<SurfaceHit>& y) {
@@ -403,7 +404,7 @@ TEST(CadIntersector, FarEndsGiveTheCrossingsOfThePartInTheBox) {
 // Threads with their own OpenCASCADE state give the serial answers on B-splines.
 TEST(CadIntersector, ConcurrentCrossingsMatchSerialOnes) {
   const auto oracle = load_shared("gmsh_wrenchnut.stp");
-  if (!oracle) GTEST_SKIP() << kStep << " is absent";
+  if (!oracle) RDMESH_MISSING_SHARED_DATA("step/ files");
   const auto list = segments(*oracle, 600, 11);
   auto answers = [&] {
     std::vector<double> out;

@@ -9,6 +9,7 @@
 
 #include "oracles/oracle_conformance.h"
 #include "same_answers_on_threads.h"
+#include "shared_data.h"
 #include "rdmesh/errors.h"
 
 namespace rdmesh {
@@ -121,19 +122,13 @@ TEST(CadOracle, ConcurrentQueriesMatchSerialOnes) {
 namespace rdmesh {
 namespace {
 
-// The conformance suite on shared STEP files (skipped when the data is absent).
+// The conformance suite on shared STEP files (see shared_data.h when it is absent).
 TEST(CadOracle, SharedStepFilesPassConformance) {
-  const std::string dir = "/work/shared/data/step/";
   for (const char* f : {"cadquery_red_cube_blue_cylinder.step", "gmsh_torus_step_header_data.stp",
                         "gmsh_box_step_boundary_colors.stp"}) {
     SCOPED_TRACE(f);
-    std::unique_ptr<CadOracle> o;
-    try {
-      o = load_cad_file(dir + f);
-    } catch (const InputError&) {
-      GTEST_SKIP() << dir << " is absent";
-    }
-    expect_oracle_conformance(*o, 400);
+    RDMESH_REQUIRE_SHARED_DATA(path, std::string("step/") + f);
+    expect_oracle_conformance(*load_cad_file(path), 400);
   }
 }
 

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.h"
+#include "shared_data.h"
 
 namespace rdmesh::test {
 namespace {
@@ -15,13 +16,10 @@ nlohmann::json read_json(const std::string& path) {
   return nlohmann::json::parse(in);
 }
 
-const std::string kFandisk = "'" + std::string(RDMESH_SOURCE_DIR) + "/../shared/data/mesh/cgal_fandisk.off'";
-
 TEST(CliInputs, TriangleMeshWithFeatureAngle) {
   ScratchDir dir;
-  if (!std::filesystem::exists(std::string(RDMESH_SOURCE_DIR) + "/../shared/data/mesh/cgal_fandisk.off")) {
-    GTEST_SKIP() << "shared data not beside the checkout";
-  }
+  RDMESH_REQUIRE_SHARED_DATA(fandisk, "mesh/cgal_fandisk.off");
+  const std::string kFandisk = "'" + fandisk + "'";
   ASSERT_EQ(run_cli(kFandisk + " -o a.mesh -q --report a.json", dir.path()).exit_code, 0);
   ASSERT_EQ(run_cli(kFandisk + " -o b.mesh -q --feature-angle 30 --report b.json", dir.path()).exit_code,
             0);

@@ -42,7 +42,7 @@ class TriangleMeshInputs : public testing::TestWithParam<Case> {};
 
 TEST_P(TriangleMeshInputs, MeshedFaithfully) {
   const Case c = GetParam();
-  RDMESH_SHARED_DATA_OR_SKIP(path, "mesh/" + c.file);
+  RDMESH_REQUIRE_SHARED_DATA(path, "mesh/" + c.file);
   const auto oracle = TriangleMeshOracle::from_file(path);
   const double h = c.size_fraction * oracle->bounding_box().diagonal();
   Criteria criteria;
@@ -144,7 +144,7 @@ INSTANTIATE_TEST_SUITE_P(
 /// minimum-size guard stops them there. The result is still a valid,
 /// conforming mesh of the right volume.
 TEST(TriangleMeshInputs, HingeWithRefineEdgesEndsByTheGuard) {
-  RDMESH_SHARED_DATA_OR_SKIP(path, "mesh/netgen_hinge.stl");
+  RDMESH_REQUIRE_SHARED_DATA(path, "mesh/netgen_hinge.stl");
   const auto oracle = TriangleMeshOracle::from_file(path);
   const double h = 0.04 * oracle->bounding_box().diagonal();
   Criteria criteria;

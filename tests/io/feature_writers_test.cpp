@@ -144,7 +144,7 @@ TEST(FeatureWriters, GmshEntityTopology) {
 }
 
 TEST(FeatureWriters, GmshCheckAcceptsAndCountsEveryDimension) {
-  if (!testing::gmsh_available()) GTEST_SKIP() << "gmsh is not installed";
+  if (!testing::gmsh_available()) RDMESH_MISSING_PREREQUISITE("gmsh");
   TempDir dir;
   const TetMesh mesh = featured_mesh();
   write_mesh(mesh, dir.file("f.msh"));

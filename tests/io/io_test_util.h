@@ -11,6 +11,8 @@
 #include <sstream>
 #include <string>
 
+#include "shared_data.h"  // RDMESH_MISSING_PREREQUISITE
+
 namespace rdmesh::testing {
 
 /// A fresh directory under the system temp dir, removed with its contents on destruction.

@@ -36,7 +36,7 @@ with open(sys.argv[2], "w") as f:
 class MeshioTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    if (!meshio_available()) GTEST_SKIP() << "python3-meshio is not installed";
+    if (!meshio_available()) RDMESH_MISSING_PREREQUISITE("python3-meshio");
     write_text(dir_.file("dump.py"), kMeshioDump);
   }
 

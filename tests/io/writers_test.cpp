@@ -66,7 +66,7 @@ TEST_F(WritersTest, GmshRoundTripThroughMeshio) {
 }
 
 TEST(GmshCheck, AcceptsOurMshAndMeditFiles) {
-  if (!testing::gmsh_available()) GTEST_SKIP() << "gmsh is not installed";
+  if (!testing::gmsh_available()) RDMESH_MISSING_PREREQUISITE("gmsh");
   TempDir dir;
   const TetMesh mesh = jittered_mesh();
   write_mesh(mesh, dir.file("m.msh"));

@@ -136,7 +136,7 @@ TEST(TriangleMeshOracle, OpenOrSelfIntersectingInputsAreRejected) {
 }
 
 TEST(TriangleMeshOracle, Fandisk) {
-  RDMESH_SHARED_DATA_OR_SKIP(path, "mesh/cgal_fandisk.off");
+  RDMESH_REQUIRE_SHARED_DATA(path, "mesh/cgal_fandisk.off");
   const auto o = TriangleMeshOracle::from_file(path);
   EXPECT_EQ(o->subdomains().size(), 1u);
   EXPECT_GT(o->patches().size(), 10u);
@@ -169,7 +169,7 @@ TEST(TriangleMeshOracle, Fandisk) {
 class SharedMeshes : public testing::TestWithParam<std::string> {};
 
 TEST_P(SharedMeshes, Conformance) {
-  RDMESH_SHARED_DATA_OR_SKIP(path, "mesh/" + GetParam());
+  RDMESH_REQUIRE_SHARED_DATA(path, "mesh/" + GetParam());
   const auto o = TriangleMeshOracle::from_file(path);
   EXPECT_GT(o->volume(), 0.0);
   expect_oracle_conformance(*o, 500);
