@@ -6,6 +6,7 @@ packages=(
   build-essential cmake ccache pkg-config git
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev libeigen3-dev
   libmuparser-dev nlohmann-json3-dev libcli11-dev libgtest-dev
+  libpng-dev zlib1g-dev  # view/: PNG pictures, zlib-compressed .vtu input
   python3-meshio gmsh   # independent readers used by the round-trip tests
   # OpenCASCADE for cad/ (STEP/IGES need data-exchange, whose CMake config also
   # wants the ocaf and visualization dev packages; TKernel links TBB).
