@@ -16,6 +16,7 @@
 #include "heap_setup.h"
 #include "run_setup.h"
 #include "progress_display.h"
+#include "view_command.h"
 
 namespace {
 
@@ -30,6 +31,7 @@ int run(const rdmesh::cli::Options& opt) {
   (void)format_from_path(opt.output);  // unknown extension: fail before meshing
   cli::check_writable(opt.output);
   if (!opt.report.empty()) cli::check_writable(opt.report);
+  if (!opt.picture.path.empty()) (void)cli::picture_options(opt.picture, opt.input);
 
   cli::LoadedInput input = cli::load_input(opt);
   const Criteria criteria = cli::resolve_criteria(opt, input);
@@ -47,6 +49,7 @@ int run(const rdmesh::cli::Options& opt) {
 
   auto t = std::chrono::steady_clock::now();
   write_mesh(result.mesh, opt.output);
+  if (!opt.picture.path.empty()) cli::write_picture(result.mesh, opt.picture, opt.input);
   const double seconds_write =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 
@@ -93,6 +96,7 @@ int run(const rdmesh::cli::Options& opt) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc > 1 && std::string(argv[1]) == "view") return rdmesh::cli::run_view_command(argc - 1, argv + 1);
   rdmesh::cli::setup_heap();
   CLI::App app{"rdmesh: tetrahedral meshes of domains bounded by piecewise smooth surfaces"};
   rdmesh::cli::Options opt;

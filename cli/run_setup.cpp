@@ -67,6 +67,9 @@ void add_options(CLI::App& app, Options& opt) {
                  "Triangle-mesh input: an edge is a sharp curve when its two triangles' normals "
                  "turn by more than this, degrees (default 60)")
       ->check(CLI::Range(0.0, 180.0));
+  app.add_option("--picture", opt.picture.path,
+                 "Also write a picture of the mesh (.png): the boundary and a cut view");
+  add_picture_options(app, opt.picture);
 }
 
 LoadedInput load_input(const Options& opt) {

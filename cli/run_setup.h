@@ -14,6 +14,7 @@
 #include "rdmesh/mesher.h"
 #include "rdmesh/oracle.h"
 #include "rdmesh/quality_report.h"
+#include "picture_args.h"
 
 namespace rdmesh::cli {
 
@@ -30,6 +31,7 @@ struct Options {
   double feature_angle = 60;  ///< --feature-angle DEG: sharp-edge threshold of triangle-mesh input
   FeatureMethod features = FeatureMethod::kProtectingBalls;  ///< --features protect|refine
   bool surface_only = false;  ///< --surface-only: triangles only, open meshes accepted
+  PictureArgs picture;        ///< --picture FILE.png and its options
 };
 
 void add_options(CLI::App& app, Options& opt);
