@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include <filesystem>
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 
@@ -104,8 +104,29 @@ TEST(Picture, PointsNoElementUsesDoNotMoveThePicture) {
   const Image image = render_picture(mesh, options());
   mesh.points.push_back({100, -50, 7});
   const Image with_far_point = render_picture(mesh, options());
-  const std::size_t views = 3 * static_cast<std::size_t>(image.width) * left_view(image).y1;  // not the legend
+  const std::size_t views =
+      3 * static_cast<std::size_t>(image.width) * left_view(image).y1;  // not the legend
   EXPECT_TRUE(std::equal(image.rgb.begin(), image.rgb.begin() + views, with_far_point.rgb.begin()));
+}
+
+TEST(Picture, AHiddenSliverIsMarkedByARing) {
+  ViewMesh mesh = cube_grid(6, 0);
+  const int base = static_cast<int>(mesh.points.size());
+  // Deep inside the kept half x <= 0.5, behind the cut faces.
+  for (const Point3& p : {Point3{0.2, 0.4, 0.4}, Point3{0.2, 0.6, 0.4}, Point3{0.2, 0.6, 0.6},
+                          Point3{0.201, 0.4, 0.6}}) {
+    mesh.points.push_back(p);
+  }
+  mesh.tets.push_back({base, base + 1, base + 2, base + 3});
+  mesh.tet_labels.push_back(1);
+  const Image image = render_picture(mesh, options());
+  EXPECT_GT(count_exact(image, right_view(image), kHighlight), 20u);
+  // A sliver in the half the cut takes away is not drawn.
+  for (Point3& p : mesh.points) {
+    if (&p - mesh.points.data() >= base) p.x += 0.6;
+  }
+  const Image cut_away = render_picture(mesh, options());
+  EXPECT_EQ(count_exact(cut_away, right_view(cut_away), kHighlight), 0u);
 }
 
 TEST(Picture, SameMeshSameBytes) {

@@ -93,7 +93,8 @@ void Canvas::draw_line(const ScreenVertex& a, const ScreenVertex& b, float width
   fill_triangle(a0, b1, b0, colour, {}, 0, depth_bias);
 }
 
-void Canvas::draw_dot(const ScreenVertex& centre, float radius, Rgb colour, float depth_bias) {
+void Canvas::draw_dot(const ScreenVertex& centre, float radius, Rgb colour, float depth_bias,
+                      float hole) {
   if (!usable(centre)) return;
   const int x0 = std::max(clip_.x0, static_cast<int>(std::floor(centre.x - radius)));
   const int x1 = std::min(clip_.x1 - 1, static_cast<int>(std::ceil(centre.x + radius)));
@@ -103,7 +104,8 @@ void Canvas::draw_dot(const ScreenVertex& centre, float radius, Rgb colour, floa
     for (int x = x0; x <= x1; ++x) {
       const float ex = static_cast<float>(x) + 0.5f - centre.x,
                   ey = static_cast<float>(y) + 0.5f - centre.y;
-      if (ex * ex + ey * ey > radius * radius) continue;
+      const float r2 = ex * ex + ey * ey;
+      if (r2 > radius * radius || r2 < hole * hole) continue;
       const std::size_t index = static_cast<std::size_t>(y) * width_ + x;
       if (!(centre.depth + depth_bias > depth_[index])) continue;
       depth_[index] = centre.depth;

@@ -41,8 +41,10 @@ class Canvas {
   /// A line `width` pixels wide with square ends, depth-tested like a triangle.
   void draw_line(const ScreenVertex& a, const ScreenVertex& b, float width, Rgb colour,
                  float depth_bias);
-  /// A disc of `radius` pixels at `centre`'s depth.
-  void draw_dot(const ScreenVertex& centre, float radius, Rgb colour, float depth_bias);
+  /// A disc of `radius` pixels at `centre`'s depth; with `hole` > 0 a ring, the
+  /// pixels closer than `hole` to the centre left as they are.
+  void draw_dot(const ScreenVertex& centre, float radius, Rgb colour, float depth_bias,
+                float hole = 0);
 
   /// The picture reduced by `factor` in each direction (each output pixel the
   /// rounded mean of factor x factor pixels): the supersampling's antialiasing.

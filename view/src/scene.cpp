@@ -51,6 +51,29 @@ void draw_triangles(Canvas& canvas, const Camera& camera, const std::vector<Scre
   }
 }
 
+/// The faces of the kept tetrahedra that no other kept one shares and that face
+/// the viewer, coloured by subdomain (`worst` ones unshaded in kHighlight),
+/// with their sides.
+void draw_tet_faces(Canvas& canvas, const Camera& camera, const std::vector<ScreenVertex>& screen,
+                    const ViewMesh& mesh, const std::vector<char>& kept_tets,
+                    const std::vector<char>& worst, const Strokes& strokes) {
+  const LabelRanks ranks(mesh.tet_labels);
+  for (const TetFace& f : exposed_faces(mesh, kept_tets)) {
+    const auto& tet = mesh.tets[f.tet];
+    const int k = static_cast<int>(f.local), i = (k + 1) % 4, j = (k + 2) % 4, l = (k + 3) % 4;
+    const Point3& pi = mesh.points[tet[i]];
+    Point3 n = cross(mesh.points[tet[j]] - pi, mesh.points[tet[l]] - pi);
+    const double away = -dot(n, mesh.points[tet[k]] - pi);  // > 0: n points out of the tetrahedron
+    if (away < 0) n = -1.0 * n;
+    if (away != 0 && dot(n, camera.eye) <= 0) continue;  // back face
+    const Rgb base = worst[f.tet] ? kHighlight : label_colour(ranks.rank(mesh.tet_labels[f.tet]));
+    const double light = lighting(camera, n);
+    canvas.fill_triangle(screen[tet[i]], screen[tet[j]], screen[tet[l]],
+                         worst[f.tet] ? kHighlight : shade(base, light), shade(base, 0.55 * light),
+                         strokes.element_edge);
+  }
+}
+
 }  // namespace
 
 Surface boundary_surface(const ViewMesh& mesh) {
@@ -85,38 +108,34 @@ void draw_cut_view(Canvas& canvas, const Camera& camera, const ViewMesh& mesh,
   const int side = coordinate(camera.eye, cut.axis) >= 0 ? 1 : -1;
   auto behind = [&](double x) { return (x - cut.offset) * side <= 0; };
   std::vector<char> kept(mesh.points.size());
-  for (std::size_t i = 0; i < mesh.points.size(); ++i)
+  for (std::size_t i = 0; i < mesh.points.size(); ++i) {
     kept[i] = behind(coordinate(mesh.points[i], cut.axis));
-
+  }
   if (mesh.tets.empty()) {
     draw_triangles(canvas, camera, screen, mesh, surface, strokes, &kept);
-  } else {
-    std::vector<char> kept_tets(mesh.tets.size());
-    for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
-      const auto& tet = mesh.tets[t];
-      double centroid = 0;
-      for (int v : tet) centroid += 0.25 * coordinate(mesh.points[v], cut.axis);
-      kept_tets[t] = behind(centroid);
-    }
-    const LabelRanks ranks(mesh.tet_labels);
-    for (const TetFace& f : exposed_faces(mesh, kept_tets)) {
-      const auto& tet = mesh.tets[f.tet];
-      const int k = static_cast<int>(f.local), i = (k + 1) % 4, j = (k + 2) % 4, l = (k + 3) % 4;
-      const Point3& pi = mesh.points[tet[i]];
-      Point3 n = cross(mesh.points[tet[j]] - pi, mesh.points[tet[l]] - pi);
-      const double away =
-          -dot(n, mesh.points[tet[k]] - pi);  // > 0 when n points out of the tetrahedron
-      if (away < 0) n = -1.0 * n;
-      if (away != 0 && dot(n, camera.eye) <= 0) continue;  // back face
-      const bool worst = quality.min_angle[f.tet] < sliver_angle;
-      const Rgb base = worst ? kHighlight : label_colour(ranks.rank(mesh.tet_labels[f.tet]));
-      const double light = lighting(camera, n);
-      canvas.fill_triangle(screen[tet[i]], screen[tet[j]], screen[tet[l]],
-                           worst ? kHighlight : shade(base, light), shade(base, 0.55 * light),
-                           strokes.element_edge);
-    }
+    draw_features(canvas, screen, mesh, strokes, false, [&](int v) { return kept[v] != 0; });
+    return;
   }
+  std::vector<char> kept_tets(mesh.tets.size());
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+    double centroid = 0;
+    for (int v : mesh.tets[t]) centroid += 0.25 * coordinate(mesh.points[v], cut.axis);
+    kept_tets[t] = behind(centroid);
+  }
+  std::vector<char> worst(mesh.tets.size());
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t) worst[t] = quality.min_angle[t] < sliver_angle;
+  draw_tet_faces(canvas, camera, screen, mesh, kept_tets, worst, strokes);
   draw_features(canvas, screen, mesh, strokes, false, [&](int v) { return kept[v] != 0; });
+  // Rings on top mark every highlighted tetrahedron behind the cut, also the
+  // hidden ones and those too small to see.
+  constexpr float kOnTop = 2;  // depths lie within [-0.5, 0.5]
+  const float radius = 1.5f * strokes.corner, hole = radius - 1.5f * strokes.element_edge;
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+    if (!kept_tets[t] || !worst[t]) continue;
+    Point3 centroid;
+    for (int v : mesh.tets[t]) centroid = centroid + 0.25 * mesh.points[v];
+    canvas.draw_dot(camera.project(centroid), radius, kHighlight, kOnTop, hole);
+  }
 }
 
 }  // namespace rdmesh::view::detail

@@ -43,7 +43,8 @@ void draw_surface_view(Canvas& canvas, const Camera& camera, const ViewMesh& mes
 /// Right view: what lies behind `cut` (the half-space away from the viewer):
 /// the faces of the tetrahedra whose centroid is there, coloured by subdomain
 /// or in kHighlight when their smallest dihedral angle is below `sliver_angle`,
-/// and the sharp curves; without tetrahedra, the surface's triangles there.
+/// the sharp curves, and a kHighlight ring on top at each such tetrahedron
+/// (seen or hidden); without tetrahedra, the surface's triangles there.
 void draw_cut_view(Canvas& canvas, const Camera& camera, const ViewMesh& mesh,
                    const Surface& surface, const CutPlane& cut, const TetQuality& quality,
                    double sliver_angle, const Strokes& strokes);
