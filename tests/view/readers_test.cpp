@@ -17,6 +17,7 @@
 #include "rdmesh/mesh_writers.h"
 #include "rdmesh/view_conversion.h"
 #include "rdmesh/view_mesh.h"
+#include "shared_data.h"
 
 namespace rdmesh::view::testing {
 namespace {
@@ -85,7 +86,7 @@ TEST(Readers, ReadBackWhatOurWritersWrite) {
 }
 
 TEST(Readers, ReadGmshOwnMeshesInBothVersions) {
-  if (!rdmesh::testing::gmsh_available()) GTEST_SKIP() << "gmsh is not installed";
+  if (!rdmesh::testing::gmsh_available()) RDMESH_MISSING_PREREQUISITE("gmsh");
   TempDir dir;
   rdmesh::testing::write_text(
       dir.file("two.geo"),
@@ -113,7 +114,7 @@ TEST(Readers, ReadGmshOwnMeshesInBothVersions) {
 }
 
 TEST(Readers, ReadMeshioVtuInItsEncodings) {
-  if (!rdmesh::testing::meshio_available()) GTEST_SKIP() << "meshio is not installed";
+  if (!rdmesh::testing::meshio_available()) RDMESH_MISSING_PREREQUISITE("meshio");
   const TetMesh mesh = rdmesh::testing::jittered(rdmesh::testing::featured_two_cube_mesh());
   TempDir dir;
   write_mesh(mesh, dir.file("ours.vtu"));
