@@ -268,7 +268,8 @@ const std::string kVtuHead =
     "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" header_type=\"UInt64\"><UnstructuredGrid>";
 
 const BadFile kBadFiles[] = {
-    BadFile{"msh_binary", parse_gmsh, "$MeshFormat\n4.1 1 8\n$EndMeshFormat\n", "binary"},
+    BadFile{"msh_binary", parse_gmsh,
+            std::string("$MeshFormat\n4.1 1 8\n\1\0\0\0\n$EndMeshFormat\n", 40), "binary"},
     BadFile{"msh_version", parse_gmsh, "$MeshFormat\n3.0 0 8\n$EndMeshFormat\n", "not supported"},
     BadFile{"msh_not_msh", parse_gmsh, "solid cube\nfacet normal 0 0 1\n", "$MeshFormat"},
     BadFile{"msh_huge_count", parse_gmsh, kMshHead + "$Nodes\n1 4000000000 1 4000000000\n",

@@ -53,8 +53,8 @@ class GmshReader {
     const double version = s_.read_double("the format version");
     const std::int64_t file_type = s_.read_int("the file type");
     s_.read_int("the data size");
-    s_.expect("$EndMeshFormat");
     if (file_type != 0) s_.fail("binary .msh files are not supported (save the mesh as ASCII)");
+    s_.expect("$EndMeshFormat");
     if (version >= 2 && version < 3) {
       v2_ = true;
     } else if (!(version >= 4.1 && version < 5)) {
