@@ -256,7 +256,8 @@ std::string format_run_summary(const Options& opt, const RefinementStats& stats,
     << stats.seconds_initial + stats.seconds_refine
     << " s, exude " << exudation.seconds << " s, extract " << stats.seconds_extract << " s, write " << times.write << " s, report "
     << times.report << " s\n";
-  s << "wrote " << opt.output << (opt.report.empty() ? "" : " and " + opt.report) << '\n';
+  s << "wrote " << opt.output << (opt.report.empty() ? "" : " and " + opt.report)
+    << (opt.picture.path.empty() ? "" : " and " + opt.picture.path) << '\n';
   return s.str();
 }
 

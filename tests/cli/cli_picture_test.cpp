@@ -41,6 +41,10 @@ TEST(CliPicture, MeshingRunWritesThePictureBesideTheMesh) {
   EXPECT_TRUE(std::filesystem::exists(dir.file("m.msh")));
   EXPECT_EQ(png_size(dir.file("p.png")), (std::array<unsigned, 2>{640, 400}));
   EXPECT_EQ(dir.entries(), 2u) << "temporary files left behind";
+  const CliRun loud = run_cli(std::string("'") + source_path("samples/sphere.json") +
+                                  "' --size 0.4 -o m.msh --picture p.png --picture-size 640x400",
+                              dir.path());
+  EXPECT_NE(loud.output.find("wrote m.msh and p.png"), std::string::npos) << loud.output;
 }
 
 TEST(CliPicture, ViewDrawsEachFormatTheSameWayEveryTime) {
