@@ -24,6 +24,14 @@ PictureOptions options(int width = 800, int height = 500) {
   return o;
 }
 
+/// Appends tetrahedron `p` (new points) to `mesh`, in subdomain 1.
+void add_tet(ViewMesh& mesh, const std::array<Point3, 4>& p) {
+  const int base = static_cast<int>(mesh.points.size());
+  mesh.points.insert(mesh.points.end(), p.begin(), p.end());
+  mesh.tets.push_back({base, base + 1, base + 2, base + 3});
+  mesh.tet_labels.push_back(1);
+}
+
 TEST(Picture, HasTheRequestedSize) {
   const ViewMesh mesh = cube_grid(4, 0.3);
   for (auto [w, h] : {std::pair{800, 500}, {1203, 611}, {320, 320}}) {
@@ -87,13 +95,7 @@ TEST(Picture, APlantedSliverIsHighlighted) {
   // A flat tetrahedron across the default cut plane x = 0.5, facing the viewer
   // (who is on the +x side): a square normal to x with two opposite corners
   // moved 0.015 towards the viewer; its centroid is behind the plane, so it is kept.
-  const int base = static_cast<int>(mesh.points.size());
-  for (const Point3& p : {Point3{0.505, 0.3, 0.3}, Point3{0.49, 0.7, 0.3}, Point3{0.505, 0.7, 0.7},
-                          Point3{0.49, 0.3, 0.7}}) {
-    mesh.points.push_back(p);
-  }
-  mesh.tets.push_back({base, base + 1, base + 2, base + 3});
-  mesh.tet_labels.push_back(1);
+  add_tet(mesh, {{{0.505, 0.3, 0.3}, {0.49, 0.7, 0.3}, {0.505, 0.7, 0.7}, {0.49, 0.3, 0.7}}});
   const Image image = render_picture(mesh, options());
   EXPECT_GT(count_exact(image, right_view(image), kHighlight), 500u);
   EXPECT_EQ(count_exact(image, left_view(image), kHighlight), 0u);
@@ -111,20 +113,13 @@ TEST(Picture, PointsNoElementUsesDoNotMoveThePicture) {
 
 TEST(Picture, AHiddenSliverIsMarkedByARing) {
   ViewMesh mesh = cube_grid(6, 0);
-  const int base = static_cast<int>(mesh.points.size());
+  const std::size_t base = mesh.points.size();
   // Deep inside the kept half x <= 0.5, behind the cut faces.
-  for (const Point3& p : {Point3{0.2, 0.4, 0.4}, Point3{0.2, 0.6, 0.4}, Point3{0.2, 0.6, 0.6},
-                          Point3{0.201, 0.4, 0.6}}) {
-    mesh.points.push_back(p);
-  }
-  mesh.tets.push_back({base, base + 1, base + 2, base + 3});
-  mesh.tet_labels.push_back(1);
+  add_tet(mesh, {{{0.2, 0.4, 0.4}, {0.2, 0.6, 0.4}, {0.2, 0.6, 0.6}, {0.201, 0.4, 0.6}}});
   const Image image = render_picture(mesh, options());
   EXPECT_GT(count_exact(image, right_view(image), kHighlight), 20u);
   // A sliver in the half the cut takes away is not drawn.
-  for (Point3& p : mesh.points) {
-    if (&p - mesh.points.data() >= base) p.x += 0.6;
-  }
+  for (std::size_t i = base; i < mesh.points.size(); ++i) mesh.points[i].x += 0.6;
   const Image cut_away = render_picture(mesh, options());
   EXPECT_EQ(count_exact(cut_away, right_view(cut_away), kHighlight), 0u);
 }
