@@ -267,15 +267,6 @@ double ProtectionPlanner::radius_of(const BallRef& b) const {
   return b.curve < 0 ? corner_radius_[b.corner] : curves_[b.curve].samples[b.index].radius;
 }
 
-void ProtectionPlanner::keep_visible(const BallRef& a, const BallRef& b, double dist) {
-  // A weighted point p is hidden by q when |p - q|^2 < w_q - w_p: it would
-  // vanish from the regular triangulation. Cut the larger ball just enough.
-  const double ra = radius_of(a), rb = radius_of(b);
-  const BallRef& big = ra >= rb ? a : b;
-  const double small = std::min(ra, rb), large = std::max(ra, rb);
-  if (dist * dist > 0.999 * (large * large - small * small)) return;
-  clamp_radius(big, std::sqrt(0.98 * (dist * dist + small * small)));
-}
 
 bool ProtectionPlanner::check_arcs() {
   bool changed = false;
@@ -415,7 +406,6 @@ bool ProtectionPlanner::separate_balls(bool record) {
               if (level[other] == level[k] && other <= static_cast<int>(k)) continue;
               const Ball& o = balls[other];
               const double dist = distance(b.center, o.center);
-              if (record) keep_visible(b.ref, o.ref, dist);
               const double need = disjoint_distance(b.radius, o.radius);
               if (dist >= need || adjacent(b.ref, o.ref)) continue;
               // Unrelated features: overlapping balls are fine while each
@@ -517,6 +507,7 @@ void ProtectionPlanner::resolve() {
   unresolved_.clear();
   unresolved_pairs_ = 0;
   separate_balls(true);
+  keep_all_visible();
 }
 
 ProtectionPlan ProtectionPlanner::plan() {

@@ -163,9 +163,10 @@ class ProtectionPlanner {
   /// Caps the radius of ball b in the final samples (no resampling).
   void clamp_radius(const BallRef& b, double radius);
   double radius_of(const BallRef& b) const;
-  /// Cuts the larger of two balls so that it does not hide the other's centre
-  /// in the regular triangulation (only where B1/B2 could not be met).
-  void keep_visible(const BallRef& a, const BallRef& b, double dist);
+  /// Cuts larger balls until no ball's centre lies outside its own power cell,
+  /// so that no protecting ball is hidden in the regular triangulation (only
+  /// matters where B1/B2 could not be met; protection_visibility.cpp).
+  void keep_all_visible();
   /// Shrinks balls whose arcs violate (B3); true if any changed.
   bool check_arcs();
   /// Distance from x to ball b's feature near b: the corner itself, or the

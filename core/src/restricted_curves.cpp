@@ -124,11 +124,20 @@ void Refiner::insert_protecting_balls() {
   CGAL::spatial_sort(order.begin(), order.end(), SortTraits(CGAL::make_property_map(points)));
 
   std::vector<Vertex_handle> vertex(balls.size());
+  std::size_t shared = 0;  // balls equal to an earlier one (coincident features)
   Cell_handle hint;
   for (const std::size_t k : order) {
     const Ball& b = balls[k];
-    const Vertex_handle v =
-        tr_.insert(Weighted_point(points[k], b.radius * b.radius), hint);
+    const Weighted_point wp(points[k], b.radius * b.radius);
+    const Vertex_handle v = tr_.insert(wp, hint);
+    if (v != Vertex_handle() && v->info().dim != FeatureDim::kVolume && v->point() == wp) {
+      // Features closer than anything the planner can separate (edges of
+      // touching solids left unmerged) share the vertex: the planner made
+      // their balls equal, and the conflict is reported.
+      vertex[k] = v;
+      ++shared;
+      continue;
+    }
     if (v == Vertex_handle() || v->info().dim != FeatureDim::kVolume) {
       throw InternalError("protecting ball at (" + std::to_string(b.point.x) + ", " +
                           std::to_string(b.point.y) + ", " + std::to_string(b.point.z) +
@@ -159,11 +168,11 @@ void Refiner::insert_protecting_balls() {
     }
   }
   // A vertex hidden by a later ball would vanish from the triangulation.
-  if (tr_.number_of_vertices() != balls.size()) {
+  if (tr_.number_of_vertices() + shared != balls.size()) {
     throw InternalError("protecting balls hide one another (" + std::to_string(balls.size()) +
                         " inserted, " + std::to_string(tr_.number_of_vertices()) + " remain)");
   }
-  stats_.initial_points += balls.size();
+  stats_.initial_points += balls.size() - shared;
 }
 
 ChainEdges Refiner::chain_edges() const {
