@@ -81,6 +81,9 @@ LoadedInput load_input(const Options& opt) {
     if (opt.heal) {
       for (const std::string& line : cad->log()) std::cerr << path << ": " << line << "\n";
     }
+    for (const std::string& w : cad->warnings()) {
+      std::cerr << "rdmesh: warning: " << path << ": " << w << "\n";
+    }
     return {std::move(cad), {}};
   }
   std::string ext = fs::path(path).extension().string();

@@ -3,11 +3,13 @@
 // non-degenerated edges) and corners (vertices ending open curves).
 #include <BOPAlgo_Builder.hxx>
 #include <BRepBndLib.hxx>
+#include <BRepGProp.hxx>
 #include <BRepLib.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
+#include <GProp_GProps.hxx>
 #include <GeomAdaptor_Curve.hxx>
 #include <GeomAdaptor_Surface.hxx>
 #include <Geom_BSplineCurve.hxx>
@@ -20,6 +22,7 @@
 #include <TopoDS_Edge.hxx>
 #include <TopoDS_Vertex.hxx>
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
 
@@ -47,6 +50,27 @@ void fuse_solids(const ReadShape& read, CadOracle::Model& m, const std::string& 
   }
   m.input_solids = static_cast<int>(input.size());
   if (input.empty()) throw InputError(source, "the model holds no solid");
+  // A solid stored inside out (its faces' normals pointing in: a negative
+  // volume) would make locate() call all the space around it inside; one
+  // without volume (an open or flat shell) made the general fuse hand the
+  // space around the other solids to it (occt_Axis_of_bearing.brep).
+  std::vector<double> volume(input.size());
+  double largest = 0;
+  for (std::size_t i = 0; i < input.size(); ++i) {
+    GProp_GProps props;
+    BRepGProp::VolumeProperties(input[i], props);
+    volume[i] = props.Mass();
+    largest = std::max(largest, std::fabs(volume[i]));
+    if (volume[i] < 0) {
+      input[i] = TopoDS::Solid(input[i].Reversed());
+      m.log.push_back("solid " + std::to_string(i + 1) +
+                      " was inside out (negative volume): reversed");
+    }
+  }
+  std::vector<char> empty(input.size(), 0);
+  for (std::size_t i = 0; i < input.size(); ++i) {
+    if (!(std::fabs(volume[i]) > 1e-12 * largest)) empty[i] = 1;
+  }
   for (std::size_t i = 0; i < input.size(); ++i) {
     std::string name = "solid_" + std::to_string(i + 1);
     for (const auto& [shape, n] : read.solid_names) {
@@ -54,13 +78,18 @@ void fuse_solids(const ReadShape& read, CadOracle::Model& m, const std::string& 
     }
     m.subdomains.push_back({SubdomainId(static_cast<int>(i) + 1), name});
   }
+  if (std::count(empty.begin(), empty.end(), 1) == static_cast<long>(input.size())) {
+    throw InputError(source, "the model's solids have no volume (open or flat shells)");
+  }
   if (input.size() == 1) {
     m.pieces.push_back({input[0], SubdomainId(1), {}});
     m.shape = input[0];
     return;
   }
   BOPAlgo_Builder builder;
-  for (const TopoDS_Solid& s : input) builder.AddArgument(s);
+  for (std::size_t i = 0; i < input.size(); ++i) {
+    if (!empty[i]) builder.AddArgument(input[i]);
+  }
   builder.SetRunParallel(false);
   builder.SetNonDestructive(true);
   builder.Perform();
@@ -70,6 +99,7 @@ void fuse_solids(const ReadShape& read, CadOracle::Model& m, const std::string& 
   }
   TopTools_IndexedMapOfShape taken;
   for (std::size_t i = 0; i < input.size(); ++i) {
+    if (empty[i]) continue;
     const TopTools_ListOfShape& images = builder.Modified(input[i]);
     std::vector<TopoDS_Shape> parts;
     if (images.IsEmpty()) {
@@ -82,6 +112,17 @@ void fuse_solids(const ReadShape& read, CadOracle::Model& m, const std::string& 
       taken.Add(s);
       m.pieces.push_back({TopoDS::Solid(s), SubdomainId(static_cast<int>(i) + 1), {}});
     }
+  }
+  std::set<int> kept;
+  for (const SolidPiece& p : m.pieces) kept.insert(p.id.value);
+  for (std::size_t i = 0; i < input.size(); ++i) {
+    if (kept.count(static_cast<int>(i) + 1)) continue;
+    m.warnings.push_back(
+        "solid " + std::to_string(i + 1) + " (" + m.subdomains[i].name + ") " +
+        (empty[i] ? "has no volume (an open or flat shell)"
+                  : "lies inside earlier solids (where solids overlap, the first in file order "
+                    "keeps the overlap)") +
+        ": it gets no tetrahedra");
   }
   TopoDS_Compound all;
   BRep_Builder b;

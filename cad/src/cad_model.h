@@ -177,6 +177,8 @@ struct CadOracle::Model {
   Box3 box;
   double tolerance = 0;
   std::vector<std::string> log;
+  /// What the user should know about the model (solids that got no volume).
+  std::vector<std::string> warnings;
 };
 
 namespace cad {

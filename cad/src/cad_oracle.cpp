@@ -135,6 +135,7 @@ std::vector<CornerInfo> CadOracle::corners() const { return model_->corners; }
 std::vector<CurveInfo> CadOracle::curves() const { return model_->curve_infos; }
 int CadOracle::input_solids() const { return model_->input_solids; }
 const std::vector<std::string>& CadOracle::log() const { return model_->log; }
+const std::vector<std::string>& CadOracle::warnings() const { return model_->warnings; }
 
 const Curve& CadOracle::curve(CurveId id) const {
   if (id.value < 1 || id.value > static_cast<int>(model_->curves.size())) {
@@ -290,6 +291,21 @@ double CadOracle::exact_volume(SubdomainId id) const {
     rethrow_occt(e, "exact_volume");
   }
   return v;
+}
+
+double CadOracle::exact_area(PatchId id) const {
+  double a = 0;
+  try {
+    for (std::size_t i = 0; i < model_->faces.size(); ++i) {
+      if (id.value != 0 && model_->patches[i].id != id) continue;
+      GProp_GProps props;
+      BRepGProp::SurfaceProperties(model_->faces[i].face, props);
+      a += props.Mass();
+    }
+  } catch (const Standard_Failure& e) {
+    rethrow_occt(e, "exact_area");
+  }
+  return a;
 }
 
 std::unique_ptr<CadOracle> load_cad_file(const std::string& path, const CadOptions& options) {

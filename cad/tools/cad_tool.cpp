@@ -1,5 +1,6 @@
 // rdmesh_cad_tool: small helpers around the CAD oracle for benchmarks and samples.
-//   rdmesh_cad_tool info FILE           JSON: solids, patches, curves, corners, bbox, exact volume
+//   rdmesh_cad_tool info FILE           JSON: solids, patches, curves, corners, bbox, exact
+//                                       volume (whole and per subdomain) and area
 //   rdmesh_cad_tool write SHAPE FILE    writes a test shape (box, cylinder, box_minus_cylinder,
 //                                       two_boxes, sphere) as STEP / BREP / IGES
 #include <cstdio>
@@ -19,9 +20,14 @@ int main(int argc, char** argv) {
       const Box3 b = o->bounding_box();
       std::printf(
           "{\"solids\": %d, \"subdomains\": %zu, \"patches\": %zu, \"curves\": %zu, "
-          "\"corners\": %zu, \"diagonal\": %.17g, \"volume\": %.17g}\n",
+          "\"corners\": %zu, \"diagonal\": %.17g, \"volume\": %.17g, \"area\": %.17g, "
+          "\"subdomain_volumes\": [",
           o->input_solids(), o->subdomains().size(), o->patches().size(), o->curves().size(),
-          o->corners().size(), b.diagonal() / 1.02, o->exact_volume());
+          o->corners().size(), b.diagonal() / 1.02, o->exact_volume(), o->exact_area());
+      for (const SubdomainInfo& s : o->subdomains()) {
+        std::printf("%s%.17g", s.id.value == 1 ? "" : ", ", o->exact_volume(s.id));
+      }
+      std::printf("]}\n");
       return 0;
     }
     const std::map<std::string, CadTestShape> shapes = {

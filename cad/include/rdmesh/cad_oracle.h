@@ -102,10 +102,15 @@ class CadOracle final : public DomainOracle {
 
   /// OpenCASCADE's exact volume (BRepGProp) of subdomain `id`; all subdomains when id is 0.
   double exact_volume(SubdomainId id = kOutside) const;
+  /// OpenCASCADE's exact area (BRepGProp) of patch `id`'s face; of all patches when id is 0.
+  double exact_area(PatchId id = PatchId(0)) const;
   /// Number of solids read from the file (before the general fuse).
   int input_solids() const;
   /// What loading did (units, fuse, healing), one line per entry.
   const std::vector<std::string>& log() const;
+  /// What the user should know about the model: solids that lie inside
+  /// earlier ones and so get no tetrahedra. One line per entry.
+  const std::vector<std::string>& warnings() const;
 
   /// The crossing of segment [a, b] with a face that is nearest to a, as the
   /// intersector finds it (intersect() adds a bisection when it is tangent or

@@ -1,0 +1,39 @@
+// Assemblies as real files store them: solids without volume, solids inside
+// out, solids inside other solids. The model must still give every subdomain
+// a non-negative volume and account for the whole of the input's volume.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "rdmesh/cad_oracle.h"
+#include "shared_data.h"
+
+namespace rdmesh {
+namespace {
+
+TEST(CadAssembly, ASolidWithoutVolumeIsLeftOutOfTheFuse) {
+  // occt_Axis_of_bearing.brep: 18 solids, the 15th without volume. In the
+  // general fuse it took the space around the others (volume -35673), the
+  // 16th-18th got nothing, and refinement ran for ever on the wrong domain.
+  RDMESH_REQUIRE_SHARED_DATA(path, "brep/occt_Axis_of_bearing.brep");
+  const auto oracle = load_cad_file(path);
+  ASSERT_EQ(oracle->subdomains().size(), 18u);
+  double sum = 0;
+  for (const SubdomainInfo& s : oracle->subdomains()) {
+    const double v = oracle->exact_volume(s.id);
+    EXPECT_GE(v, 0) << "subdomain " << s.id.value;
+    sum += v;
+  }
+  // The housing, the shaft, twelve balls of radius 2 and three rings.
+  EXPECT_NEAR(oracle->exact_volume(SubdomainId(1)), 29206.34, 0.01);
+  EXPECT_NEAR(oracle->exact_volume(SubdomainId(3)), 4.0 / 3.0 * 3.14159265358979 * 8, 1e-6);
+  EXPECT_NEAR(oracle->exact_volume(SubdomainId(16)), 8566.68, 0.01);
+  EXPECT_EQ(oracle->exact_volume(SubdomainId(15)), 0);
+  EXPECT_NEAR(sum, oracle->exact_volume(), 1e-9 * sum);
+  ASSERT_EQ(oracle->warnings().size(), 1u);
+  EXPECT_NE(oracle->warnings()[0].find("solid 15"), std::string::npos) << oracle->warnings()[0];
+  EXPECT_NE(oracle->warnings()[0].find("no volume"), std::string::npos) << oracle->warnings()[0];
+}
+
+}  // namespace
+}  // namespace rdmesh
