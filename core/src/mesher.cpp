@@ -1,6 +1,8 @@
 #include "rdmesh/mesher.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <set>
@@ -67,6 +69,16 @@ void record_protection(const detail::ProtectionPlan& plan,
 MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& criteria,
                          const MeshOptions& options) {
   criteria.validate();
+  if (!(options.time_limit_seconds >= 0) || !std::isfinite(options.time_limit_seconds)) {
+    throw InputError("the time limit must be a number of seconds >= 0 (0: none), got " +
+                     std::to_string(options.time_limit_seconds));
+  }
+  const auto run_start = std::chrono::steady_clock::now();
+  const auto deadline =
+      options.time_limit_seconds > 0
+          ? run_start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                            std::chrono::duration<double>(options.time_limit_seconds))
+          : std::chrono::steady_clock::time_point::max();
   const bool protect = options.features == FeatureMethod::kProtectingBalls &&
                        !(oracle.curves().empty() && oracle.corners().empty());
   auto t = std::chrono::steady_clock::now();
@@ -88,13 +100,15 @@ MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& criteria,
   for (bool restart = true; restart;) {
     refiner = std::make_unique<detail::Refiner>(oracle, criteria, options,
                                                 protect ? &plan : nullptr);
+    refiner->set_deadline(deadline);
     t = std::chrono::steady_clock::now();
     refiner->insert_initial_points();
     initial += seconds_since(t);
     t = std::chrono::steady_clock::now();
     refiner->refine(protect && restarts < kMaxRestarts);
     restart = false;
-    if (protect && restarts < kMaxRestarts && !refiner->conflicts().empty()) {
+    const bool out_of_time = refiner->stats().time_limit_reached;
+    if (protect && restarts < kMaxRestarts && !refiner->conflicts().empty() && !out_of_time) {
       const auto ts = std::chrono::steady_clock::now();
       restart = planner->shrink(refiner->conflicts(), plan);
       protect_seconds += seconds_since(ts);
@@ -108,10 +122,19 @@ MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& criteria,
   }
 
   MeshResult result;
-  if (options.exudation.enabled && !options.surface_only) {
+  ExudationOptions exudation = options.exudation;
+  if (options.time_limit_seconds > 0) {
+    // Exudation gets what is left of the run's time (nothing after a stop).
+    const double left = options.time_limit_seconds - seconds_since(run_start);
+    if (refiner->stats().time_limit_reached || left <= 0) exudation.enabled = false;
+    if (exudation.time_limit_seconds <= 0 || exudation.time_limit_seconds > left) {
+      exudation.time_limit_seconds = std::max(left, 1e-9);
+    }
+  }
+  if (exudation.enabled && !options.surface_only) {
     const detail::ChainEdges chains = refiner->chain_edges();
     result.exudation =
-        detail::exude_slivers(refiner->triangulation(), criteria, options.exudation, &chains);
+        detail::exude_slivers(refiner->triangulation(), criteria, exudation, &chains);
   }
 
   t = std::chrono::steady_clock::now();
@@ -125,7 +148,8 @@ MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& criteria,
   result.stats.seconds_initial = initial;
   result.stats.seconds_refine = refine;
   result.stats.seconds_extract = seconds_since(t);
-  check_output(oracle, options.surface_only, result);
+  // A run stopped by its time limit reports what it reached, even nothing.
+  if (!result.stats.time_limit_reached) check_output(oracle, options.surface_only, result);
   return result;
 }
 

@@ -150,6 +150,14 @@ void Refiner::refine(bool stop_on_conflict) {
       break;
     }
     if (options_.progress && ++insertions_since_progress_ >= 4096) report_progress();
+    if (++steps_since_clock_ >= 256) {
+      steps_since_clock_ = 0;
+      if (std::chrono::steady_clock::now() > deadline_) {
+        stats_.time_limit_reached = true;
+        stats_.elements_left = arc_queue_.size() + facet_queue_.size() + cell_queue_.size();
+        break;
+      }
+    }
   }
   if (options_.progress) report_progress();
 }

@@ -44,6 +44,8 @@ class Refiner {
   /// (the facet queue is empty) if a protecting ball was found reaching into
   /// a patch its feature does not bound (see conflicts()).
   void refine(bool stop_on_conflict = false);
+  /// Refinement stops when the clock passes `deadline` (stats().time_limit_reached).
+  void set_deadline(std::chrono::steady_clock::time_point deadline) { deadline_ = deadline; }
   /// Balls that reached into a patch their feature does not bound (R3 could
   /// not be met there): shrinking them and refining again removes the conflict.
   const std::vector<BallRef>& conflicts() const { return conflicts_; }
@@ -195,6 +197,8 @@ class Refiner {
 
   RefinementStats stats_;
   std::chrono::steady_clock::time_point start_time_;
+  std::chrono::steady_clock::time_point deadline_ = std::chrono::steady_clock::time_point::max();
+  std::size_t steps_since_clock_ = 0;
   std::size_t insertions_since_progress_ = 0;
 };
 

@@ -49,6 +49,11 @@ struct MeshOptions {
   /// tetrahedra; its triangles are oriented consistently on each connected,
   /// orientable piece.
   bool surface_only = false;
+  /// Stop refinement once the run (from the call of generate_mesh) has taken
+  /// this many seconds; 0: no limit. The mesh is then what refinement reached
+  /// (RefinementStats::time_limit_reached says so); exudation gets what is
+  /// left of the time, if anything.
+  double time_limit_seconds = 0;
 };
 
 /// What refinement did, for the report.
@@ -79,6 +84,11 @@ struct RefinementStats {
   /// after the last restart; the features involved (at most 20).
   std::size_t protection_conflicts = 0;
   std::vector<std::string> protection_features;
+  /// Refinement stopped at MeshOptions::time_limit_seconds with elements
+  /// still to refine (`elements_left`: edges, facets and cells in the queues,
+  /// some of them no longer bad).
+  bool time_limit_reached = false;
+  std::size_t elements_left = 0;
   double seconds_protect = 0.0;  ///< sizing the balls (all rounds)
   double seconds_initial = 0.0;
   double seconds_refine = 0.0;
