@@ -10,10 +10,12 @@
 #include <string>
 
 #include "rdmesh/errors.h"
+#include "rdmesh/fidelity.h"
 #include "rdmesh/mesh_writers.h"
 #include "rdmesh/mesher.h"
 #include "rdmesh/quality_report.h"
 #include "heap_setup.h"
+#include "model_measures.h"
 #include "run_setup.h"
 #include "progress_display.h"
 #include "view_command.h"
@@ -23,6 +25,12 @@ namespace {
 int fail(int code, const std::string& message) {
   std::fprintf(stderr, "rdmesh: error: %s\n", message.c_str());
   return code;
+}
+
+std::string seconds(double s) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%g", s);
+  return buffer;
 }
 
 int run(const rdmesh::cli::Options& opt) {
@@ -44,26 +52,40 @@ int run(const rdmesh::cli::Options& opt) {
   mesh_options.exudation = cli::exudation_options(opt);
   mesh_options.features = opt.features;
   mesh_options.surface_only = opt.surface_only;
+  mesh_options.time_limit_seconds = opt.time_limit;
   MeshResult result = generate_mesh(*input.oracle, criteria, mesh_options);
   progress.finish();
 
+  // The cheap measures and the fidelity check first: a mesh that does not
+  // match the model is not written (unless asked).
   auto t = std::chrono::steady_clock::now();
-  write_mesh(result.mesh, opt.output);
-  if (!opt.picture.path.empty()) cli::write_picture(result.mesh, opt.picture, opt.input);
-  const double seconds_write =
+  const bool full = opt.full_check || !opt.report.empty();
+  const QualityReport quality = measure_quality(result.mesh, full ? input.oracle.get() : nullptr);
+  std::optional<FidelityReport> fidelity;
+  if (const auto model = cli::model_measures(*input.oracle, opt.surface_only)) {
+    fidelity = check_fidelity(quality, *model, input.oracle->patches(), input.oracle->curves(),
+                              criteria.facet_distance);
+  }
+  const double seconds_report =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+  const bool bad = result.stats.time_limit_reached || (fidelity && !fidelity->passed);
 
   t = std::chrono::steady_clock::now();
-  const QualityReport quality = measure_quality(result.mesh, input.oracle.get());
-  const double seconds_report =
+  if (!bad || opt.keep_bad_mesh) {
+    write_mesh(result.mesh, opt.output);
+    if (!opt.picture.path.empty()) cli::write_picture(result.mesh, opt.picture, opt.input);
+  }
+  const double seconds_write =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 
   const cli::RunTimes times{seconds_load, seconds_write, seconds_report};
   if (!opt.report.empty()) {
-    cli::write_json_report(opt, criteria, result.stats, result.exudation, quality, times);
+    cli::write_json_report(opt, criteria, result.stats, result.exudation, quality, fidelity,
+                           times);
   }
   if (!opt.quiet) {
-    std::cout << format_summary(quality) << cli::format_run_summary(opt, result.stats, result.exudation, times);
+    std::cout << format_summary(quality) << cli::format_run_summary(opt, result.stats, result.exudation, times,
+                                                                   !bad || opt.keep_bad_mesh);
   }
   for (const PatchId& patch : result.stats.missing_patches) {
     std::fprintf(stderr, "rdmesh: warning: patch %d has no triangle in the mesh (too small for "
@@ -90,7 +112,15 @@ int run(const rdmesh::cli::Options& opt) {
     std::fprintf(stderr, "rdmesh: warning: %zu feature edges are not edges of the mesh\n",
                  result.stats.unmeshed_feature_edges);
   }
-  return 0;
+  if (!bad) return 0;
+  const std::string what =
+      result.stats.time_limit_reached
+          ? "refinement stopped at the time limit (" + seconds(opt.time_limit) + " s) with " + std::to_string(result.stats.elements_left) +
+                " elements still queued"
+          : "the mesh does not match the model: " + summarize_problems(*fidelity);
+  return fail(4, opt.input + ": " + what +
+                     (opt.keep_bad_mesh ? " (written anyway: --keep-bad-mesh)"
+                                        : "; no mesh written (--keep-bad-mesh writes it)"));
 }
 
 }  // namespace

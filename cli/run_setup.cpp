@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <fstream>
@@ -37,17 +38,19 @@ void add_options(CLI::App& app, Options& opt) {
   app.add_option("--min-size", opt.min_size,
                  "Termination guard: no two vertices closer than this (default 1e-4 of the box diagonal)");
   app.add_flag("--no-exude", opt.no_exude, "Skip sliver exudation after refinement");
+  const CLI::Validator seconds(
+      [](std::string& v) -> std::string {
+        try {
+          const double s = std::stod(v);
+          if (s >= 0 && std::isfinite(s)) return {};
+        } catch (const std::exception&) {
+        }
+        return "must be a number of seconds >= 0 (0 = no limit), got '" + v + "'";
+      },
+      "SECONDS");
   app.add_option("--exude-time-limit", opt.exude_time_limit,
                  "Stop sliver exudation after this many seconds (default: no limit)")
-      ->check(CLI::Validator(
-          [](std::string& v) -> std::string {
-            try {
-              if (std::stod(v) >= 0) return {};
-            } catch (const std::exception&) {
-            }
-            return "must be a number of seconds >= 0 (0 = no limit), got '" + v + "'";
-          },
-          "SECONDS"));
+      ->check(seconds);
   app.add_option("--report", opt.report, "Write a JSON report of the run to this file");
   app.add_flag("-q,--quiet", opt.quiet, "No progress and no summary");
   app.add_flag("--heal", opt.heal,
@@ -67,6 +70,18 @@ void add_options(CLI::App& app, Options& opt) {
                  "Triangle-mesh input: an edge is a sharp curve when its two triangles' normals "
                  "turn by more than this, degrees (default 60)")
       ->check(CLI::Range(0.0, 180.0));
+  app.add_option("--time-limit", opt.time_limit,
+                 "Stop refinement after this many seconds of meshing; the run then fails "
+                 "(exit 4) unless --keep-bad-mesh (default: no limit)")
+      ->check(seconds);
+  app.add_flag("--keep-bad-mesh", opt.keep_bad_mesh,
+               "Write the mesh even when it fails the fidelity check or the time limit "
+               "stopped it (the exit code is still 4)");
+  app.add_option("--check", opt.full_check,
+                 "Fidelity check: 'cheap' (volumes, patches, curve chains; default) or 'full' "
+                 "(also every boundary triangle's distance to its surface; also with --report)")
+      ->transform(CLI::CheckedTransformer(std::map<std::string, bool>{{"cheap", false}, {"full", true}},
+                                          CLI::ignore_case));
   app.add_option("--picture", opt.picture.path,
                  "Also write a picture of the mesh (.png): the boundary and a cut view");
   add_picture_options(app, opt.picture);
@@ -177,7 +192,7 @@ nlohmann::json field_json(const ScalarField& f) {
 
 void write_json_report(const Options& opt, const Criteria& criteria, const RefinementStats& stats,
                        const ExudationStats& exudation, const QualityReport& quality,
-                       const RunTimes& times) {
+                       const std::optional<FidelityReport>& fidelity, const RunTimes& times) {
   nlohmann::json j = to_json(quality);
   j["input"] = opt.input;
   j["output"] = opt.output;
@@ -192,7 +207,10 @@ void write_json_report(const Options& opt, const Criteria& criteria, const Refin
                      {"edge_centers_inserted", stats.inserted_edge_centers},
                      {"facet_centers_inserted", stats.inserted_facet_centers},
                      {"cell_centers_inserted", stats.inserted_cell_centers},
-                     {"encroachments", stats.encroachments}};
+                     {"encroachments", stats.encroachments},
+                     {"time_limit_reached", stats.time_limit_reached},
+                     {"elements_left", stats.elements_left}};
+  j["fidelity"] = fidelity ? to_json(*fidelity) : nlohmann::json(nullptr);
   j["guard"] = {{"fired", stats.guard_fired()},
                 {"rejected_points", stats.guard_rejections},
                 {"features", stats.guard_features}};
@@ -227,7 +245,8 @@ void write_json_report(const Options& opt, const Criteria& criteria, const Refin
 }
 
 std::string format_run_summary(const Options& opt, const RefinementStats& stats,
-                               const ExudationStats& exudation, const RunTimes& times) {
+                               const ExudationStats& exudation, const RunTimes& times,
+                               bool wrote_mesh) {
   std::ostringstream s;
   s.setf(std::ios::fixed);
   s.precision(2);
@@ -259,8 +278,12 @@ std::string format_run_summary(const Options& opt, const RefinementStats& stats,
     << stats.seconds_initial + stats.seconds_refine
     << " s, exude " << exudation.seconds << " s, extract " << stats.seconds_extract << " s, write " << times.write << " s, report "
     << times.report << " s\n";
-  s << "wrote " << opt.output << (opt.report.empty() ? "" : " and " + opt.report)
-    << (opt.picture.path.empty() ? "" : " and " + opt.picture.path) << '\n';
+  if (wrote_mesh) {
+    s << "wrote " << opt.output << (opt.report.empty() ? "" : " and " + opt.report)
+      << (opt.picture.path.empty() ? "" : " and " + opt.picture.path) << '\n';
+  } else {
+    s << "no mesh written" << (opt.report.empty() ? "" : "; wrote " + opt.report) << '\n';
+  }
   return s.str();
 }
 

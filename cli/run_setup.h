@@ -11,6 +11,7 @@
 
 #include "rdmesh/criteria.h"
 #include "rdmesh/domain_file.h"
+#include "rdmesh/fidelity.h"
 #include "rdmesh/mesher.h"
 #include "rdmesh/oracle.h"
 #include "rdmesh/quality_report.h"
@@ -32,6 +33,9 @@ struct Options {
   FeatureMethod features = FeatureMethod::kProtectingBalls;  ///< --features protect|refine
   bool surface_only = false;  ///< --surface-only: triangles only, open meshes accepted
   PictureArgs picture;        ///< --picture FILE.png and its options
+  double time_limit = 0;      ///< --time-limit SECONDS: stop refinement, 0 = none
+  bool keep_bad_mesh = false; ///< --keep-bad-mesh: write a mesh that failed the fidelity check
+  bool full_check = false;    ///< --check full (or --report): measure every distance
 };
 
 void add_options(CLI::App& app, Options& opt);
@@ -63,10 +67,12 @@ struct RunTimes {
 
 void write_json_report(const Options& opt, const Criteria& criteria, const RefinementStats& stats,
                        const ExudationStats& exudation, const QualityReport& quality,
-                       const RunTimes& times);
+                       const std::optional<FidelityReport>& fidelity, const RunTimes& times);
 
+/// `wrote_mesh`: false when the fidelity check (or the time limit) kept the mesh from being written.
 std::string format_run_summary(const Options& opt, const RefinementStats& stats,
-                               const ExudationStats& exudation, const RunTimes& times);
+                               const ExudationStats& exudation, const RunTimes& times,
+                               bool wrote_mesh = true);
 
 }  // namespace rdmesh::cli
 

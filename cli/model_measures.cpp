@@ -1,0 +1,50 @@
+#include "model_measures.h"
+
+#include "rdmesh/cad_oracle.h"
+#include "rdmesh/triangle_mesh_oracle.h"
+
+namespace rdmesh::cli {
+namespace {
+
+ModelMeasures cad_measures(const CadOracle& cad, bool surface_only) {
+  ModelMeasures m;
+  for (const PatchInfo& p : cad.patches()) {
+    m.patch_area.resize(static_cast<std::size_t>(p.id.value), 0.0);
+    m.patch_area[static_cast<std::size_t>(p.id.value) - 1] = cad.exact_area(p.id);
+  }
+  if (surface_only) return m;
+  for (const SubdomainInfo& s : cad.subdomains()) {
+    m.subdomain_volume.resize(static_cast<std::size_t>(s.id.value), 0.0);
+    m.subdomain_volume[static_cast<std::size_t>(s.id.value) - 1] = cad.exact_volume(s.id);
+  }
+  return m;
+}
+
+ModelMeasures triangle_mesh_measures(const TriangleMeshOracle& tm, bool surface_only) {
+  ModelMeasures m;
+  const TriangleSoup& soup = tm.mesh();
+  const std::vector<PatchId>& patch = tm.triangle_patches();
+  for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
+    const auto& tri = soup.triangles[t];
+    const Point3 &a = soup.points[tri[0]], &b = soup.points[tri[1]], &c = soup.points[tri[2]];
+    const std::size_t k = static_cast<std::size_t>(patch[t].value) - 1;
+    if (k >= m.patch_area.size()) m.patch_area.resize(k + 1, 0.0);
+    m.patch_area[k] += 0.5 * norm(cross(b - a, c - a));
+  }
+  if (!surface_only) m.total_volume = tm.volume();
+  return m;
+}
+
+}  // namespace
+
+std::optional<ModelMeasures> model_measures(const DomainOracle& oracle, bool surface_only) {
+  if (const auto* cad = dynamic_cast<const CadOracle*>(&oracle)) {
+    return cad_measures(*cad, surface_only);
+  }
+  if (const auto* tm = dynamic_cast<const TriangleMeshOracle*>(&oracle)) {
+    return triangle_mesh_measures(*tm, surface_only);
+  }
+  return std::nullopt;
+}
+
+}  // namespace rdmesh::cli

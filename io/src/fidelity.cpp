@@ -1,0 +1,121 @@
+// check_fidelity: the mesh against the model's exact measures (see fidelity.h).
+#include "rdmesh/fidelity.h"
+
+#include <cmath>
+#include <cstdio>
+#include <set>
+
+namespace rdmesh {
+namespace {
+
+std::string format(const char* pattern, double a, double b, double c, double d) {
+  char buffer[160];
+  std::snprintf(buffer, sizeof buffer, pattern, a, b, c, d);
+  return buffer;
+}
+
+/// Area of the patches that bound subdomain `id` (all patches for id 0).
+double bounding_area(SubdomainId id, const ModelMeasures& model,
+                     const std::vector<PatchInfo>& patches) {
+  double area = 0;
+  for (const PatchInfo& p : patches) {
+    const std::size_t k = static_cast<std::size_t>(p.id.value) - 1;
+    if (k >= model.patch_area.size()) continue;
+    if (id == kOutside || p.side_a == id || p.side_b == id) area += model.patch_area[k];
+  }
+  return area;
+}
+
+VolumeCheck compare(SubdomainId id, std::string name, double mesh, double exact, double area,
+                    double facet_distance) {
+  VolumeCheck c{id, std::move(name), mesh, exact, 0, true};
+  c.tolerance = facet_distance * area + 1e-9 * std::fabs(exact);
+  c.passed = std::fabs(mesh - exact) <= c.tolerance;
+  return c;
+}
+
+}  // namespace
+
+FidelityReport check_fidelity(const QualityReport& quality, const ModelMeasures& model,
+                              const std::vector<PatchInfo>& patches,
+                              const std::vector<CurveInfo>& curves, double facet_distance) {
+  FidelityReport r;
+  if (!model.subdomain_volume.empty()) {
+    for (const SubdomainStats& s : quality.subdomains) {
+      const std::size_t k = static_cast<std::size_t>(s.id.value) - 1;
+      if (k >= model.subdomain_volume.size()) continue;
+      r.volumes.push_back(compare(s.id, s.name.empty() ? "subdomain " + std::to_string(s.id.value)
+                                                       : s.name,
+                                  s.volume, model.subdomain_volume[k],
+                                  bounding_area(s.id, model, patches), facet_distance));
+    }
+  } else if (model.total_volume) {
+    double mesh = 0;
+    for (const SubdomainStats& s : quality.subdomains) mesh += s.volume;
+    r.volumes.push_back(compare(kOutside, "the domain", mesh, *model.total_volume,
+                                bounding_area(kOutside, model, patches), facet_distance));
+  }
+  for (const VolumeCheck& v : r.volumes) {
+    if (v.passed) continue;
+    const double scale = std::fabs(v.model_volume) > 0 ? 100 / std::fabs(v.model_volume) : 0;
+    r.problems.push_back(v.name + format(": volume %.4g, model %.4g (%+.1f%%, allowed +-%.1f%%)",
+                                         v.mesh_volume, v.model_volume,
+                                         (v.mesh_volume - v.model_volume) * scale,
+                                         v.tolerance * scale));
+  }
+  std::set<int> meshed;
+  for (const PatchStats& p : quality.patches) {
+    if (p.triangles > 0) meshed.insert(p.id.value);
+  }
+  for (const PatchInfo& p : patches) {
+    if (meshed.count(p.id.value)) continue;
+    r.missing_patches.push_back(p.id);
+    r.problems.push_back("patch " + std::to_string(p.id.value) + " has no triangle");
+  }
+  std::set<int> chained;
+  for (const CurveStats& c : quality.curves) {
+    if (c.is_chain) chained.insert(c.id.value);
+  }
+  for (const CurveInfo& c : curves) {
+    if (chained.count(c.id.value)) continue;
+    r.broken_curves.push_back(c.id);
+    r.problems.push_back("curve " + std::to_string(c.id.value) + " (" + c.name +
+                         ") is not one chain of edges");
+  }
+  r.passed = r.problems.empty();
+  return r;
+}
+
+nlohmann::json to_json(const FidelityReport& r) {
+  nlohmann::json j;
+  j["passed"] = r.passed;
+  j["volumes"] = nlohmann::json::array();
+  for (const VolumeCheck& v : r.volumes) {
+    j["volumes"].push_back({{"id", v.id.value},
+                            {"name", v.name},
+                            {"mesh", v.mesh_volume},
+                            {"model", v.model_volume},
+                            {"tolerance", v.tolerance},
+                            {"passed", v.passed}});
+  }
+  j["missing_patches"] = nlohmann::json::array();
+  for (const PatchId& p : r.missing_patches) j["missing_patches"].push_back(p.value);
+  j["broken_curves"] = nlohmann::json::array();
+  for (const CurveId& c : r.broken_curves) j["broken_curves"].push_back(c.value);
+  j["problems"] = r.problems;
+  return j;
+}
+
+std::string summarize_problems(const FidelityReport& report) {
+  constexpr std::size_t kShown = 3;
+  std::string s;
+  for (std::size_t k = 0; k < report.problems.size() && k < kShown; ++k) {
+    s += (k ? "; " : "") + report.problems[k];
+  }
+  if (report.problems.size() > kShown) {
+    s += "; and " + std::to_string(report.problems.size() - kShown) + " more";
+  }
+  return s;
+}
+
+}  // namespace rdmesh

@@ -1,0 +1,101 @@
+// The fidelity check (io/include/rdmesh/fidelity.h) on hand-made meshes whose
+// volumes, patches and chains are known: a mesh that matches its model passes;
+// a lost piece of volume, a patch without triangles or a broken curve fails,
+// named in one problem each.
+#include <gtest/gtest.h>
+
+#include "rdmesh/fidelity.h"
+#include "rdmesh/quality_report.h"
+#include "test_meshes.h"
+
+namespace rdmesh {
+namespace {
+
+/// The two cubes of side s: volume s^3 each; patch areas 5 s^2, 5 s^2 and s^2.
+ModelMeasures two_cube_model(double s, double left_volume) {
+  ModelMeasures m;
+  m.subdomain_volume = {left_volume, s * s * s};
+  m.patch_area = {5 * s * s, 5 * s * s, s * s};
+  return m;
+}
+
+TEST(Fidelity, AMeshThatMatchesItsModelPasses) {
+  const TetMesh mesh = testing::two_cube_mesh(0.1);
+  const QualityReport q = measure_quality(mesh, nullptr);
+  const FidelityReport r =
+      check_fidelity(q, two_cube_model(0.1, 1e-3), mesh.patches, mesh.curves, 1e-3);
+  EXPECT_TRUE(r.passed) << summarize_problems(r);
+  ASSERT_EQ(r.volumes.size(), 2u);
+  EXPECT_NEAR(r.volumes[0].mesh_volume, 1e-3, 1e-15);
+  // Tolerance: facet distance x area of the patches around the subdomain.
+  EXPECT_NEAR(r.volumes[0].tolerance, 1e-3 * 6 * 0.01 + 1e-12, 1e-15);
+  EXPECT_TRUE(r.problems.empty());
+}
+
+TEST(Fidelity, AVolumeBeyondTheToleranceFailsAndIsNamed) {
+  const TetMesh mesh = testing::two_cube_mesh(0.1);
+  const QualityReport q = measure_quality(mesh, nullptr);
+  // The model's left solid is twice the mesh's: half of it was lost.
+  const FidelityReport r =
+      check_fidelity(q, two_cube_model(0.1, 2e-3), mesh.patches, mesh.curves, 1e-3);
+  EXPECT_FALSE(r.passed);
+  ASSERT_EQ(r.problems.size(), 1u);
+  EXPECT_NE(r.problems[0].find("left: volume 0.001, model 0.002 (-50.0%"), std::string::npos)
+      << r.problems[0];
+  EXPECT_FALSE(r.volumes[0].passed);
+  EXPECT_TRUE(r.volumes[1].passed);
+  // Within the tolerance (facet distance 0.1: 0.006 allowed) the same mesh passes.
+  EXPECT_TRUE(check_fidelity(q, two_cube_model(0.1, 2e-3), mesh.patches, mesh.curves, 0.1).passed);
+}
+
+TEST(Fidelity, AWholeDomainVolumeIsCheckedWhenSubdomainsAreUnknown) {
+  const TetMesh mesh = testing::two_cube_mesh(0.1);
+  const QualityReport q = measure_quality(mesh, nullptr);
+  ModelMeasures m = two_cube_model(0.1, 1e-3);
+  m.subdomain_volume.clear();
+  m.total_volume = 3e-3;
+  const FidelityReport r = check_fidelity(q, m, mesh.patches, mesh.curves, 1e-3);
+  ASSERT_EQ(r.volumes.size(), 1u);
+  EXPECT_EQ(r.volumes[0].id, kOutside);
+  EXPECT_NEAR(r.volumes[0].mesh_volume, 2e-3, 1e-15);
+  EXPECT_FALSE(r.passed);
+  m.total_volume = 2e-3;
+  EXPECT_TRUE(check_fidelity(q, m, mesh.patches, mesh.curves, 1e-3).passed);
+}
+
+TEST(Fidelity, APatchWithoutTrianglesAndABrokenCurveFail) {
+  TetMesh mesh = testing::featured_two_cube_mesh(0.1);
+  const ModelMeasures model = two_cube_model(0.1, 1e-3);
+  std::vector<PatchInfo> patches = mesh.patches;
+  patches.push_back({PatchId(4), "lost face", SubdomainId(1), SubdomainId(2)});
+  const QualityReport whole = measure_quality(mesh, nullptr);
+  FidelityReport r = check_fidelity(whole, model, patches, mesh.curves, 1e-3);
+  ASSERT_EQ(r.missing_patches.size(), 1u);
+  EXPECT_EQ(r.missing_patches[0], PatchId(4));
+  EXPECT_TRUE(r.broken_curves.empty());
+  // Drop one of curve 1's two edges: it is no longer a chain from corner to corner.
+  for (std::size_t e = 0; e < mesh.edges.size(); ++e) {
+    if (mesh.edge_curve[e] == CurveId(1)) {
+      mesh.edges.erase(mesh.edges.begin() + static_cast<long>(e));
+      mesh.edge_curve.erase(mesh.edge_curve.begin() + static_cast<long>(e));
+      break;
+    }
+  }
+  r = check_fidelity(measure_quality(mesh, nullptr), model, mesh.patches, mesh.curves, 1e-3);
+  EXPECT_FALSE(r.passed);
+  ASSERT_EQ(r.broken_curves.size(), 1u);
+  EXPECT_EQ(r.broken_curves[0], CurveId(1));
+  EXPECT_NE(summarize_problems(r).find("is not one chain of edges"), std::string::npos);
+  const nlohmann::json j = to_json(r);
+  EXPECT_FALSE(j["passed"].get<bool>());
+  EXPECT_EQ(j["broken_curves"][0].get<int>(), 1);
+}
+
+TEST(Fidelity, TheSummaryNamesThreeProblemsAndCountsTheRest) {
+  FidelityReport r;
+  r.problems = {"a", "b", "c", "d", "e"};
+  EXPECT_EQ(summarize_problems(r), "a; b; c; and 2 more");
+}
+
+}  // namespace
+}  // namespace rdmesh
