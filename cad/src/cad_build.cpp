@@ -171,10 +171,13 @@ void collect_faces(CadOracle::Model& m, TopTools_IndexedMapOfShape& patch_faces)
     std::vector<int> labels;
     int first_owner = -1;  // the piece whose orientation the map kept
     for (const SolidPiece& p : m.pieces) {
-      // Count each side: a face used twice by one solid (a crack) separates nothing.
+      // Count each side: a face used twice by one solid (a crack), or once as
+      // INTERNAL (a crack face inside the solid, gmsh_crack1.brep), separates nothing.
       for (TopExp_Explorer ex(p.solid, TopAbs_FACE); ex.More(); ex.Next()) {
         if (!ex.Current().IsSame(face)) continue;
         labels.push_back(p.id.value);
+        const TopAbs_Orientation o = ex.Current().Orientation();
+        if (o == TopAbs_INTERNAL || o == TopAbs_EXTERNAL) labels.push_back(p.id.value);
         if (first_owner < 0) first_owner = p.id.value;
       }
     }

@@ -45,6 +45,18 @@ TEST(CadFidelity, AGoodMeshPassesAndItsReportComparesTheVolumes) {
   EXPECT_GT(mesh, 0.9 * model);
 }
 
+TEST(CadFidelity, ACrackFaceInsideTheSolidIsNotABoundary) {
+  // gmsh_crack1.brep: a unit cube with an INTERNAL face (a crack). Taken for a
+  // boundary between the solid and the outside, it cost 8% of the volume.
+  RDMESH_REQUIRE_SHARED_DATA(brep, "brep/gmsh_crack1.brep");
+  ScratchDir dir;
+  const CliRun run = run_cli("'" + brep + "' -o crack.mesh -q --report r.json", dir.path());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const nlohmann::json j = read_json(dir.file("r.json"));
+  EXPECT_EQ(j["patches"].size(), 6u);  // the cube's faces, not the crack
+  EXPECT_NEAR(j["fidelity"]["volumes"][0]["mesh"].get<double>(), 1.0, 1e-9);
+}
+
 TEST(CadFidelity, AMeshThatLosesPartOfTheModelIsExitFourWithoutOutput) {
   // bm2_ec_leverrod-A: a rod 10 m long and 25 mm thick meshed at the default
   // size of 500 mm: curves of the rod's ends are not chains of edges (at
