@@ -18,6 +18,7 @@
 #include "rdmesh/errors.h"
 #include "rdmesh/mesh_writers.h"
 #include "rdmesh/triangle_mesh_oracle.h"
+#include "cad_sizes.h"
 
 namespace rdmesh::cli {
 namespace fs = std::filesystem;
@@ -165,6 +166,11 @@ Criteria resolve_criteria(const Options& opt, const LoadedInput& input) {
   if (h.radius_edge) c.cell_radius_edge = *h.radius_edge;
   if (opt.radius_edge) c.cell_radius_edge = *opt.radius_edge;
   if (opt.min_size) c.min_size = *opt.min_size;
+  // CAD models without sizes asked: follow the thickness of slender parts.
+  const auto* cad = dynamic_cast<const CadOracle*>(input.oracle.get());
+  if (cad && !opt.size && !opt.facet_size && !opt.cell_size && !opt.edge_size) {
+    follow_thickness(*cad, c);
+  }
   try {
     c.validate();
   } catch (const InputError& e) {

@@ -1,6 +1,7 @@
 // rdmesh_cad_tool: small helpers around the CAD oracle for benchmarks and samples.
 //   rdmesh_cad_tool info FILE           JSON: solids, patches, curves, corners, bbox, exact
 //                                       volume (whole and per subdomain) and area
+//   rdmesh_cad_tool thickness FILE      the thickness behind each curved face
 //   rdmesh_cad_tool write SHAPE FILE    writes a test shape (box, cylinder, box_minus_cylinder,
 //                                       two_boxes, sphere) as STEP / BREP / IGES
 #include <cstdio>
@@ -28,6 +29,14 @@ int main(int argc, char** argv) {
         std::printf("%s%.17g", s.id.value == 1 ? "" : ", ", o->exact_volume(s.id));
       }
       std::printf("]}\n");
+      return 0;
+    }
+    if (cmd == "thickness" && argc == 3) {
+      const auto o = load_cad_file(argv[2]);
+      for (const PatchInfo& p : o->patches()) {
+        const auto t = o->curved_thickness(p.id);
+        if (t) std::printf("patch %d thickness %.6g\n", p.id.value, *t);
+      }
       return 0;
     }
     const std::map<std::string, CadTestShape> shapes = {

@@ -126,6 +126,16 @@ class CadOracle final : public DomainOracle {
   };
   std::optional<Crossing> first_crossing(const Point3& a, const Point3& b) const;
 
+  /// For a face that bends towards the material behind it with a radius at
+  /// most the material's thickness (a rod, a pin; not a hole, not a thin
+  /// shell), that thickness: from each of the face's initial points, the
+  /// distance along the surface normal to the next face on a side that is
+  /// inside a solid (a rod's diameter); the largest over the points. nullopt for planar faces and where no such
+  /// crossing is found (cad_thickness.cpp).
+  std::optional<double> curved_thickness(PatchId id) const;
+  /// The box of patch `id`'s face (OpenCASCADE's, with the model's tolerance).
+  Box3 patch_box(PatchId id) const;
+
   /// The model's OpenCASCADE data (complete in cad/src only).
   const Model& model() const { return *model_; }
 
