@@ -1,12 +1,16 @@
 #!/usr/bin/env python3
-"""CAD benchmark: rdmesh vs Gmsh (gmsh -3 -nt 1) on STEP files at the same target size.
+"""CAD benchmark: rdmesh vs Gmsh (Delaunay and HXT) on STEP/BREP files at the same target size.
 
-usage: cad_bench.py BUILD_DIR [STEP_DIR] [--timeout S] [--divisions N] [--repeat R] [--out TABLE.md]
+usage: cad_bench.py BUILD_DIR [DATA_DIR] [--timeout S] [--divisions N] [--repeat R] [--out TABLE.md]
 
-For each file: the target size is h = bbox diagonal / N (default 20); rdmesh runs
-`rdmesh FILE --size h`, Gmsh runs `gmsh FILE -3 -nt 1 -clmax h`. Both outputs are
-read back here (Gmsh .msh 4.1 ASCII, pure Python): tets, min dihedral angle and
-volume error against OpenCASCADE's exact volume (rdmesh_cad_tool info).
+For each file of DATA_DIR/step and DATA_DIR/brep: the target size is h = bbox
+diagonal / N (default 20). rdmesh runs with its defaults when N is 20 (that is its
+default size; on CAD models its sizes then also follow slender parts), else with
+`--size h`; an exit 4 (the mesh failed rdmesh's fidelity check against the model)
+is a failure. Gmsh runs `gmsh FILE -3 -nt 1 -clmax h` (its default 3D algorithm,
+Delaunay) and the same with `-algo hxt`. All outputs are read back here (Gmsh .msh
+4.1 ASCII, pure Python): tets, min dihedral angle and volume error against
+OpenCASCADE's exact volume (rdmesh_cad_tool info).
 
 Times are wall clock of the whole command (process start, reading the file,
 meshing, writing .msh). rdmesh also writes its quality report (--report: the
@@ -104,7 +108,7 @@ def main():
     # The shared data beside the checkout (../shared/data), or $RDMESH_DATA_DIR.
     data = os.environ.get("RDMESH_DATA_DIR") or os.path.join(
         os.path.dirname(os.path.abspath(__file__)), "..", "..", "shared", "data")
-    ap.add_argument("step_dir", nargs="?", default=os.path.normpath(os.path.join(data, "step")))
+    ap.add_argument("data_dir", nargs="?", default=os.path.normpath(data))
     ap.add_argument("--timeout", type=float, default=120)
     ap.add_argument("--divisions", type=float, default=20)
     ap.add_argument("--repeat", type=int, default=3,
@@ -113,39 +117,45 @@ def main():
     args = ap.parse_args()
     rdmesh = os.path.join(args.build, "cli", "rdmesh")
     tool = os.path.join(args.build, "cad", "rdmesh_cad_tool")
-    files = sorted(glob.glob(os.path.join(args.step_dir, "*.st*p")))
+    files = sorted(glob.glob(os.path.join(args.data_dir, "step", "*.st*p"))) + sorted(
+        glob.glob(os.path.join(args.data_dir, "brep", "*.brep")))
     rows = []
     tmp = tempfile.mkdtemp(prefix="rdmesh_cad_bench_")
+    gmsh_algos = (("delaunay", []), ("hxt", ["-algo", "hxt"]))
     for path in files:
         name = os.path.basename(path)
         info_p, _, err = run([tool, "info", path], args.timeout)
         if info_p is None:
-            rows.append((name, "-", "fail: " + err, "fail: " + err, "-"))
+            rows.append([name, "-"] + ["fail: " + err] * 3 + ["-", "-"])
             print(name, "info failed:", err, file=sys.stderr)
             continue
         info = json.loads(info_p.stdout)
         h = info["diagonal"] / args.divisions
         exact = info["volume"]
-        cells = []
-        r_time = g_time = None
-        r_err = g_err = ""
         out, rep = os.path.join(tmp, "r.msh"), os.path.join(tmp, "r.json")
-        gout = os.path.join(tmp, "g.msh")
+        r_cmd = [rdmesh, path, "-o", out, "-q", "--report", rep]
+        if args.divisions != 20:
+            r_cmd += ["--size", repr(h)]
+        times = {"rdmesh": None, "delaunay": None, "hxt": None}
+        errors = {k: "" for k in times}
         for _ in range(max(1, args.repeat)):
-            if not r_err:  # rdmesh, without its quality report
-                p, dt, r_err = run([rdmesh, path, "-o", out, "-q", "--size", repr(h), "--report", rep],
-                                   args.timeout)
+            if not errors["rdmesh"]:  # without its quality report's distances
+                p, dt, errors["rdmesh"] = run(r_cmd, args.timeout)
                 if p is not None:
                     dt -= json.load(open(rep))["seconds"].get("report", 0.0)
-                    r_time = dt if r_time is None else min(r_time, dt)
-            if not g_err:
-                p, dt, g_err = run(["gmsh", path, "-3", "-nt", "1", "-clmax", repr(h), "-format",
-                                    "msh41", "-o", gout], args.timeout)
+                    times["rdmesh"] = dt if times["rdmesh"] is None else min(times["rdmesh"], dt)
+            for algo, flags in gmsh_algos:
+                if errors[algo]:
+                    continue
+                gout = os.path.join(tmp, algo + ".msh")
+                p, dt, errors[algo] = run(["gmsh", path, "-3", "-nt", "1", "-clmax", repr(h)] +
+                                          flags + ["-format", "msh41", "-o", gout], args.timeout)
                 if p is not None:
-                    g_time = dt if g_time is None else min(g_time, dt)
-        if r_err:
-            r_time = None
-            cells.append("fail: " + r_err)
+                    times[algo] = dt if times[algo] is None else min(times[algo], dt)
+        cells = []
+        if errors["rdmesh"]:
+            times["rdmesh"] = None
+            cells.append("fail: " + errors["rdmesh"])
         else:
             r = json.load(open(rep))
             v = sum(s["volume"] for s in r["subdomains"])
@@ -155,38 +165,44 @@ def main():
             if r.get("protection", {}).get("conflicts", 0):
                 notes.append("%d ball conflicts" % r["protection"]["conflicts"])
             cells.append("%.2f s, %d tets, %.1f deg, %.2f%%%s" % (
-                r_time, r["tets"], r["min_dihedral_deg"], 100 * abs(v - exact) / exact,
+                times["rdmesh"], r["tets"], r["min_dihedral_deg"], 100 * abs(v - exact) / exact,
                 (" (" + ", ".join(notes) + ")") if notes else ""))
-        if g_err:
-            g_time = None
-            cells.append("fail: " + g_err)
-        else:
-            nodes, tets = read_msh_tets(gout)
+        for algo, _ in gmsh_algos:
+            if errors[algo]:
+                times[algo] = None
+                cells.append("fail: " + errors[algo])
+                continue
+            nodes, tets = read_msh_tets(os.path.join(tmp, algo + ".msh"))
             if not tets:
-                g_time = None
+                times[algo] = None
                 cells.append("fail: no tetrahedron")
-            else:
-                v, dih = tet_measures(nodes, tets)
-                cells.append("%.2f s, %d tets, %.1f deg, %.2f%%" % (g_time, len(tets), dih,
-                                                                   100 * abs(v - exact) / exact))
-        ratio = "%.2f" % (r_time / g_time) if r_time is not None and g_time else "-"
-        rows.append((name, "%.4g" % h, cells[0], cells[1], ratio))
+                continue
+            v, dih = tet_measures(nodes, tets)
+            cells.append("%.2f s, %d tets, %.1f deg, %.2f%%" % (times[algo], len(tets), dih,
+                                                               100 * abs(v - exact) / exact))
+        ratios = ["%.2f" % (times["rdmesh"] / times[a]) if times["rdmesh"] is not None and times[a]
+                  else "-" for a, _ in gmsh_algos]
+        rows.append([name, "%.4g" % h] + cells + ratios)
         print(" | ".join(rows[-1]), file=sys.stderr, flush=True)
     table = ["| file | h | rdmesh (time, tets, min dihedral, volume error) | gmsh -3 -nt 1 (same) "
-             "| time ratio |", "|---|---|---|---|---|"]
-    table += ["| %s | %s | %s | %s | %s |" % r for r in rows]
-    ok_r = sum(1 for r in rows if not r[2].startswith("fail"))
-    ok_g = sum(1 for r in rows if not r[3].startswith("fail"))
-    missed = [r[0] for r in rows if r[2].startswith("fail") and not r[3].startswith("fail")]
-    ratios = sorted(float(r[4]) for r in rows if r[4] != "-")
-    median = "-"
-    if ratios:
-        n = len(ratios)
-        median = "%.2f" % (ratios[n // 2] if n % 2 else 0.5 * (ratios[n // 2 - 1] + ratios[n // 2]))
-    table += ["", "rdmesh succeeded on %d of %d files, Gmsh on %d; rdmesh failed where Gmsh "
-              "succeeded: %s. Median time ratio rdmesh/Gmsh over %d files: %s." % (
-                  ok_r, len(rows), ok_g, ", ".join(missed) if missed else "none",
-                  len(ratios), median)]
+             "| gmsh -3 -algo hxt -nt 1 (same) | ratio to gmsh | ratio to hxt |",
+             "|---|---|---|---|---|---|---|"]
+    table += ["| " + " | ".join(r) + " |" for r in rows]
+    ok = [sum(1 for r in rows if not r[k].startswith("fail")) for k in (2, 3, 4)]
+    summary = "rdmesh succeeded on %d of %d files, Gmsh on %d, HXT on %d." % (ok[0], len(rows),
+                                                                          ok[1], ok[2])
+    for k, label in ((3, "Gmsh"), (4, "HXT")):
+        missed = [r[0] for r in rows if r[2].startswith("fail") and not r[k].startswith("fail")]
+        ratios = sorted(float(r[k + 2]) for r in rows if r[k + 2] != "-")
+        median = "-"
+        if ratios:
+            n = len(ratios)
+            median = "%.2f" % (ratios[n // 2] if n % 2 else
+                               0.5 * (ratios[n // 2 - 1] + ratios[n // 2]))
+        summary += " rdmesh failed where %s succeeded: %s. Median time ratio rdmesh/%s over " \
+                   "%d files: %s." % (label, ", ".join(missed) if missed else "none", label,
+                                      len(ratios), median)
+    table += ["", summary]
     text = "\n".join(table) + "\n"
     if args.out:
         open(args.out, "w").write(text)
