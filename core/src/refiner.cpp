@@ -199,6 +199,17 @@ bool Refiner::refine_facet_or_edge(Cell_handle c, int i) {
     // met there until the ball shrinks. Other facets whose surface ball has no
     // positive radius lie inside the balls: protected, not refined.
     if (ball_conflict(c, i) || !(facet_power(c, i, center) > 0)) return false;
+    // The guard before the conflict zone: the facet's vertices are vertices
+    // of every cell in conflict, so one closer than the minimum size refuses
+    // the point as insert_in_zone would, without the zone's cost (most of
+    // the run where features lie closer than the minimum size).
+    for (int k = 1; k < 4; ++k) {
+      const Vertex_handle v = c->vertex((i + k) & 3);
+      if (squared_norm(to_point3(v->point()) - center) < min_size_sq_) {
+        record_guard(info, v->info());
+        return false;
+      }
+    }
   }
   if (!find_conflict_zone(p, start)) {
     record_guard(info, c->vertex((i + 1) & 3)->info());  // the center coincides with a vertex
