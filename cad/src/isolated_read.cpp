@@ -2,6 +2,8 @@
 // the message it sends back through a pipe, and the parent's watch over it.
 #include "isolated_read.h"
 
+#include "exact_placements.h"
+
 #include <BinTools.hxx>
 #include <Standard_OutOfMemory.hxx>
 #include <TopExp_Explorer.hxx>
@@ -36,7 +38,8 @@
 namespace rdmesh::cad {
 namespace {
 
-// ---- The message: magic, outcome, text, log lines, solid names, shape, end mark.
+// ---- The message: magic, outcome, text, log lines, solid names, shape, its
+// exact placements, end mark.
 
 constexpr char kMagic[] = "rdmesh-cad-read-1";
 constexpr char kEnd[] = "end";
@@ -96,6 +99,7 @@ std::string encode(Outcome outcome, const std::string& text, const ReadShape* re
   e.text(text);
   std::vector<std::string> names;
   std::ostringstream shape;
+  std::string placements;
   if (read) {
     for (TopExp_Explorer ex(read->shape, TopAbs_SOLID); ex.More(); ex.Next()) {
       names.emplace_back();
@@ -105,6 +109,7 @@ std::string encode(Outcome outcome, const std::string& text, const ReadShape* re
     }
     BinTools::Write(read->shape, shape, Standard_False, Standard_False,
                     BinTools_FormatVersion_CURRENT);
+    placements = save_placements(read->shape);
   }
   e.number(read ? read->log.size() : 0);
   if (read) {
@@ -113,6 +118,7 @@ std::string encode(Outcome outcome, const std::string& text, const ReadShape* re
   e.number(names.size());
   for (const std::string& name : names) e.text(name);
   e.text(shape.str());
+  e.text(placements);
   e.text(kEnd);
   return std::move(e.out());
 }
@@ -120,7 +126,7 @@ std::string encode(Outcome outcome, const std::string& text, const ReadShape* re
 // False when the message is truncated or malformed (the child died writing it).
 bool decode(const std::string& in, Message& m) {
   Decoder d(in);
-  std::string magic, outcome, shape, end;
+  std::string magic, outcome, shape, placements, end;
   std::uint64_t n = 0;
   if (!d.text(magic) || magic != kMagic || !d.text(outcome) || outcome.size() != 1) return false;
   m.outcome = static_cast<Outcome>(outcome[0]);
@@ -135,10 +141,13 @@ bool decode(const std::string& in, Message& m) {
   for (std::string& name : names) {
     if (!d.text(name)) return false;
   }
-  if (!d.text(shape) || !d.text(end) || end != kEnd || !d.done()) return false;
+  if (!d.text(shape) || !d.text(placements) || !d.text(end) || end != kEnd || !d.done()) {
+    return false;
+  }
   if (m.outcome != Outcome::shape) return true;
   std::istringstream stream(shape);
   BinTools::Read(m.read.shape, stream);
+  if (!restore_placements(m.read.shape, placements)) return false;
   std::size_t i = 0;
   for (TopExp_Explorer ex(m.read.shape, TopAbs_SOLID); ex.More(); ex.Next(), ++i) {
     if (i >= names.size()) return false;
@@ -158,6 +167,11 @@ std::string problem_of(const InputError& e, const std::string& path) {
 }
 
 #ifdef RDMESH_CAN_FORK
+
+// The time limit in seconds, in [0, 1e9] (NaN is 0).
+double time_limit(const CadOptions& options) {
+  return options.read_time_limit > 0 ? std::min(options.read_time_limit, 1e9) : 0.0;
+}
 
 // ---- The child.
 
@@ -208,7 +222,7 @@ void limit(int resource, std::uint64_t soft, std::uint64_t hard) {
 void apply_limits(const CadOptions& options) {
   limit(RLIMIT_CORE, 0, 0);  // a crash writes no core file
   // A backstop for a child whose parent is gone: the parent's wall clock decides.
-  const auto cpu = static_cast<std::uint64_t>(std::ceil(options.read_time_limit)) + 2;
+  const auto cpu = static_cast<std::uint64_t>(std::ceil(time_limit(options))) + 2;
   limit(RLIMIT_CPU, cpu, cpu + 1);
 #ifndef RDMESH_ASAN
   std::uint64_t budget = std::uint64_t{options.read_memory_limit_mib} << 20;
@@ -336,7 +350,7 @@ ReadShape read_in_child(const std::string& path, const std::string& format,
   ::close(out.fd);
   out.fd = -1;
   std::string bytes;
-  const auto limit = std::chrono::duration<double>(std::max(0.0, options.read_time_limit));
+  const auto limit = std::chrono::duration<double>(time_limit(options));
   if (!drain(in.fd, bytes,
              start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(limit))) {
     throw InputError(path, timed_out);

@@ -148,15 +148,18 @@ void check_shape_geometry(const TopoDS_Shape& shape, const std::string& path) {
                                  why + ")");
     }
   }
-  Bnd_Box box;
-  BRepBndLib::Add(shape, box, false);
-  const double diagonal = box.IsVoid() ? 0 : std::sqrt(box.SquareExtent());
-  if (!std::isfinite(diagonal)) throw InputError(path, "the model's bounding box is not finite");
   TopExp::MapShapes(shape, TopAbs_SOLID, solids);
   for (int i = 1; i <= solids.Extent(); ++i) {
+    Bnd_Box box;
+    BRepBndLib::Add(solids(i), box, false);
+    const double diagonal = box.IsVoid() ? 0 : std::sqrt(box.SquareExtent());
+    if (!std::isfinite(diagonal)) {
+      throw InputError(path, "solid " + std::to_string(i) + "'s bounding box is not finite");
+    }
     GProp_GProps props;
     BRepGProp::VolumeProperties(solids(i), props);
     const double volume = props.Mass();
+    // Zero up to rounding, against the cube of the solid's own size.
     if (!std::isfinite(volume) || std::abs(volume) <= 1e-12 * diagonal * diagonal * diagonal) {
       throw InputError(path, "solid " + std::to_string(i) + " has no volume (" + number(volume) +
                                  "): degenerate geometry");
