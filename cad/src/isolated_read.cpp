@@ -260,6 +260,7 @@ void apply_limits(const CadOptions& options) {
                        nullptr);
     }
     write_all(fd, message);
+    ::close(fd);  // the parent reads on while this process's memory is torn down
   } catch (...) {
     ::_exit(3);  // no message: the parent reports a crash
   }
@@ -355,19 +356,18 @@ ReadShape read_in_child(const std::string& path, const std::string& format,
              start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(limit))) {
     throw InputError(path, timed_out);
   }
+  // A complete message is the child's answer, whatever its end; else its end tells.
+  Message m;
+  bool complete = false;
+  try {
+    complete = decode(bytes, m);
+  } catch (const Standard_Failure&) {
+  }
   const int status = child.reap();
-  if (WIFSIGNALED(status)) {
+  if (!complete && WIFSIGNALED(status)) {
     // SIGKILL not from us: the kernel's out-of-memory killer; SIGXCPU: the CPU backstop.
     if (WTERMSIG(status) == SIGKILL) throw InputError(path, cannot + "ran out of memory");
     if (WTERMSIG(status) == SIGXCPU) throw InputError(path, timed_out);
-  }
-  Message m;
-  bool complete = false;
-  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) {
-    try {
-      complete = decode(bytes, m);
-    } catch (const Standard_Failure&) {
-    }
   }
   if (!complete) throw InputError(path, cannot + "crashed (malformed file?)");
   if (m.outcome == Outcome::out_of_memory) throw InputError(path, cannot + "ran out of memory");
