@@ -76,27 +76,23 @@ class Walk {
     }
   }
   void curve(const Handle(Geom_Curve) & c) {
-    if (c.IsNull()) return;
-    if (const auto k = Handle(Geom_Conic)::DownCast(c); !k.IsNull()) {
-      found_.push_back(placement('C', k->Position()));
-    } else if (const auto l = Handle(Geom_Line)::DownCast(c); !l.IsNull()) {
-      found_.push_back(placement('L', l->Position()));
-    } else if (const auto t = Handle(Geom_TrimmedCurve)::DownCast(c); !t.IsNull()) {
-      curve(t->BasisCurve());
-    } else if (const auto o = Handle(Geom_OffsetCurve)::DownCast(c); !o.IsNull()) {
-      curve(o->BasisCurve());
-    }
+    any_curve<Geom_Conic, Geom_Line, Geom_TrimmedCurve, Geom_OffsetCurve>(c, 'C', 'L');
   }
   void curve2d(const Handle(Geom2d_Curve) & c) {
+    any_curve<Geom2d_Conic, Geom2d_Line, Geom2d_TrimmedCurve, Geom2d_OffsetCurve>(c, 'c', 'l');
+  }
+  // A 3D or 2D curve: the conic's or the line's placement, through trimming and offsets.
+  template <typename Conic, typename Line, typename Trimmed, typename Offset, typename Curve>
+  void any_curve(const opencascade::handle<Curve>& c, char conic_tag, char line_tag) {
     if (c.IsNull()) return;
-    if (const auto k = Handle(Geom2d_Conic)::DownCast(c); !k.IsNull()) {
-      found_.push_back(placement('c', k->Position()));
-    } else if (const auto l = Handle(Geom2d_Line)::DownCast(c); !l.IsNull()) {
-      found_.push_back(placement('l', l->Position()));
-    } else if (const auto t = Handle(Geom2d_TrimmedCurve)::DownCast(c); !t.IsNull()) {
-      curve2d(t->BasisCurve());
-    } else if (const auto o = Handle(Geom2d_OffsetCurve)::DownCast(c); !o.IsNull()) {
-      curve2d(o->BasisCurve());
+    if (const auto k = opencascade::handle<Conic>::DownCast(c); !k.IsNull()) {
+      found_.push_back(placement(conic_tag, k->Position()));
+    } else if (const auto l = opencascade::handle<Line>::DownCast(c); !l.IsNull()) {
+      found_.push_back(placement(line_tag, l->Position()));
+    } else if (const auto t = opencascade::handle<Trimmed>::DownCast(c); !t.IsNull()) {
+      any_curve<Conic, Line, Trimmed, Offset>(t->BasisCurve(), conic_tag, line_tag);
+    } else if (const auto o = opencascade::handle<Offset>::DownCast(c); !o.IsNull()) {
+      any_curve<Conic, Line, Trimmed, Offset>(o->BasisCurve(), conic_tag, line_tag);
     }
   }
   std::vector<Placement> found_;

@@ -186,8 +186,11 @@ void write_all(int fd, const std::string& s) {
 }
 
 // Nothing the child prints may reach the user (OpenCASCADE's own output, a
-// sanitizer's report of the crash), and it keeps no other file of the parent's.
+// sanitizer's report of the crash), and it keeps no other file of the parent's
+// (say the pipe of another thread's reading child). Its pipe becomes fd 3.
 void detach_files(int& fd) {
+  const int moved = ::fcntl(fd, F_DUPFD, 3);  // out of the way of 0..2
+  if (moved >= 0) fd = moved;
   const int null = ::open("/dev/null", O_RDWR);
   if (null >= 0) {
     for (int std_fd = 0; std_fd <= 2; ++std_fd) ::dup2(null, std_fd);
@@ -234,11 +237,12 @@ void apply_limits(const CadOptions& options) {
 #endif
 }
 
-[[noreturn]] void run_child(int fd, const std::string& path,
+[[noreturn]] void run_child(int fd, pid_t parent, const std::string& path,
                             const std::function<ReadShape()>& read, const CadOptions& options) {
 #if defined(__linux__)
-  ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+  ::prctl(PR_SET_PDEATHSIG, SIGKILL);  // the parent gone, so is the child
 #endif
+  if (::getppid() != parent) ::_exit(3);  // it went before the line above
   detach_files(fd);
   apply_limits(options);
   try {
@@ -344,9 +348,10 @@ ReadShape read_in_child(const std::string& path, const std::string& format,
   if (::pipe(fds) != 0) return read();  // no isolation possible: read here
   FdGuard in{fds[0]}, out{fds[1]};
   const auto start = std::chrono::steady_clock::now();
+  const pid_t parent = ::getpid();
   const pid_t pid = ::fork();
   if (pid < 0) return read();
-  if (pid == 0) run_child(fds[1], path, read, options);
+  if (pid == 0) run_child(fds[1], parent, path, read, options);
   ChildGuard child(pid);
   ::close(out.fd);
   out.fd = -1;

@@ -24,7 +24,8 @@ namespace rdmesh::cad {
 /// limits of `options` and returns its shape. `format` ("STEP", "IGES",
 /// "BREP") names the reader in the errors: "cannot read the file: the STEP
 /// reader crashed (malformed file?)", "... did not finish within 60 s", "...
-/// ran out of memory". Where fork() is unavailable, `read` runs in this process.
+/// ran out of memory". Where fork() is unavailable or fails, `read` runs in
+/// this process.
 ReadShape read_in_child(const std::string& path, const std::string& format,
                         const std::function<ReadShape()>& read, const CadOptions& options);
 

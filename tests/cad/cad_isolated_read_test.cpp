@@ -33,6 +33,21 @@ CadOptions in_process() {
   return o;
 }
 
+fs::path scratch() {
+  const fs::path dir = fs::temp_directory_path() / "rdmesh_cad_isolated_read_test";
+  fs::create_directories(dir);
+  return dir;
+}
+
+// A test shape written as a BREP file in scratch(), and the file's text.
+std::string brep_text(CadTestShape shape, const std::string& path) {
+  write_cad_test_shape(shape, path);
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
 // The InputError's message, or "" when loading succeeds.
 std::string load_error(const std::string& path, const CadOptions& options) {
   try {
@@ -91,15 +106,9 @@ TEST(CadIsolatedRead, TheMemoryLimitStopsARunawayAllocation) {
   // the reader allocates and zeroes them (1.2 GB, a second) before it reads
   // any. Under the limit the allocation fails at once; OpenCASCADE's reader
   // catches that itself and reports a table it cannot parse.
-  const fs::path dir = fs::temp_directory_path() / "rdmesh_cad_isolated_read_test";
-  fs::create_directories(dir);
-  const std::string good = (dir / "box.brep").string();
-  write_cad_test_shape(CadTestShape::box, good);
-  std::ifstream in(good);
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string path = (dir / "many_poles.brep").string();
-  std::ofstream(path) << std::regex_replace(text.str(), std::regex("\nCurves ([0-9]+)\n[^\n]*\n"),
+  const std::string text = brep_text(CadTestShape::box, (scratch() / "box.brep").string());
+  const std::string path = (scratch() / "many_poles.brep").string();
+  std::ofstream(path) << std::regex_replace(text, std::regex("\nCurves ([0-9]+)\n[^\n]*\n"),
                                             "\nCurves $1\n7 0 0 1 50000000 2 0 0 0 1 0 0\n");
   CadOptions options;
   options.read_memory_limit_mib = 64;
@@ -126,21 +135,16 @@ TEST(CadIsolatedRead, NonFiniteStepNumbersAreRejectedBeforeTheTransfer) {
 }
 
 TEST(CadIsolatedRead, BrepSectionsLongerThanTheFileAreRejected) {
-  const fs::path dir = fs::temp_directory_path() / "rdmesh_cad_isolated_read_test";
-  fs::create_directories(dir);
-  const std::string good = (dir / "box.brep").string();
-  write_cad_test_shape(CadTestShape::box_minus_cylinder, good);
+  const std::string good = (scratch() / "bmc.brep").string();
+  const std::string text = brep_text(CadTestShape::box_minus_cylinder, good);
   EXPECT_EQ(load_error(good, in_process()), "");
-  std::ifstream in(good);
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string huge = (dir / "huge.brep").string();
-  std::ofstream(huge) << std::regex_replace(text.str(), std::regex("\nCurve2ds [0-9]+\n"),
+  const std::string huge = (scratch() / "huge.brep").string();
+  std::ofstream(huge) << std::regex_replace(text, std::regex("\nCurve2ds [0-9]+\n"),
                                             "\nCurve2ds 2000000000\n");
   EXPECT_NE(load_error(huge, in_process()).find("announces 2000000000 Curve2ds"),
             std::string::npos);
-  const std::string cut = (dir / "cut.brep").string();
-  std::ofstream(cut) << text.str().substr(0, text.str().size() * 3 / 4);
+  const std::string cut = (scratch() / "cut.brep").string();
+  std::ofstream(cut) << text.substr(0, text.size() * 3 / 4);
   EXPECT_NE(load_error(cut, in_process()).find("TShapes"), std::string::npos);
 }
 
