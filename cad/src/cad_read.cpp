@@ -144,8 +144,7 @@ void heal(ReadShape& r, const std::string& path) {
 
 // Everything about reading that runs OpenCASCADE on the file's content, which
 // may crash or loop on a malformed file: in a child process when isolated.
-ReadShape read_content(const std::string& path, const std::string& ext,
-                       const CadOptions& options) {
+ReadShape read_content(const std::string& path, const std::string& ext, const CadOptions& options) {
   ReadShape r;
   try {
     if (ext == ".step" || ext == ".stp") {

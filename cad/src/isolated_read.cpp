@@ -2,17 +2,20 @@
 // the message it sends back through a pipe, and the parent's watch over it.
 #include "isolated_read.h"
 
-#include "exact_placements.h"
-
 #include <BinTools.hxx>
 #include <Standard_OutOfMemory.hxx>
 #include <TopExp_Explorer.hxx>
+#include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <new>
 #include <sstream>
+
+#include "exact_placements.h"
 
 #if defined(__unix__) || defined(__APPLE__)
 #define RDMESH_CAN_FORK 1
@@ -257,11 +260,11 @@ void apply_limits(const CadOptions& options) {
     } catch (const Standard_OutOfMemory&) {
       message = encode(Outcome::out_of_memory, {}, nullptr);
     } catch (const Standard_Failure& e) {
-      message = encode(Outcome::input_error,
-                       "OpenCASCADE failed to read the model: " + describe(e), nullptr);
-    } catch (const std::exception& e) {
-      message = encode(Outcome::input_error, std::string("the reader failed: ") + e.what(),
+      message = encode(Outcome::input_error, "OpenCASCADE failed to read the model: " + describe(e),
                        nullptr);
+    } catch (const std::exception& e) {
+      message =
+          encode(Outcome::input_error, std::string("the reader failed: ") + e.what(), nullptr);
     }
     write_all(fd, message);
     ::close(fd);  // the parent reads on while this process's memory is torn down
@@ -310,8 +313,8 @@ struct FdGuard {
 bool drain(int fd, std::string& out, std::chrono::steady_clock::time_point deadline) {
   char buffer[1 << 16];
   for (;;) {
-    const auto left = std::chrono::ceil<std::chrono::milliseconds>(
-        deadline - std::chrono::steady_clock::now());
+    const auto left =
+        std::chrono::ceil<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
     if (left.count() <= 0) return false;
     pollfd p{fd, POLLIN, 0};
     const int ready = ::poll(&p, 1, static_cast<int>(std::min<long long>(left.count(), 1 << 30)));
@@ -342,8 +345,8 @@ ReadShape read_in_child(const std::string& path, const std::string& format,
   return read();
 #else
   const std::string cannot = "cannot read the file: the " + format + " reader ";
-  const std::string timed_out = cannot + "did not finish within " +
-                                seconds(options.read_time_limit) + " s (malformed file?)";
+  const std::string timed_out =
+      cannot + "did not finish within " + seconds(options.read_time_limit) + " s (malformed file?)";
   int fds[2];
   if (::pipe(fds) != 0) return read();  // no isolation possible: read here
   FdGuard in{fds[0]}, out{fds[1]};

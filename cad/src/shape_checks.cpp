@@ -52,15 +52,16 @@ std::string degenerate_surface(const TopoDS_Face& face) {
   const auto bad = [](double r) { return !(r > 0) || !std::isfinite(r); };
   switch (s.GetType()) {
     case GeomAbs_Cylinder:
-      if (bad(s.Cylinder().Radius())) return "a cylinder of radius " + number(s.Cylinder().Radius());
+      if (bad(s.Cylinder().Radius()))
+        return "a cylinder of radius " + number(s.Cylinder().Radius());
       break;
     case GeomAbs_Sphere:
       if (bad(s.Sphere().Radius())) return "a sphere of radius " + number(s.Sphere().Radius());
       break;
     case GeomAbs_Torus:
       if (bad(s.Torus().MajorRadius()) || bad(s.Torus().MinorRadius())) {
-        return "a torus of major radius " + number(s.Torus().MajorRadius()) +
-               " and minor radius " + number(s.Torus().MinorRadius());
+        return "a torus of major radius " + number(s.Torus().MajorRadius()) + " and minor radius " +
+               number(s.Torus().MinorRadius());
       }
       break;
     default:
@@ -125,8 +126,8 @@ void check_step_numbers(const Handle(StepData_StepModel) & model, const std::str
       if (!std::isfinite(v->Magnitude())) what = "VECTOR";
     }
     if (!what.empty()) {
-      throw InputError(path, "entity #" + std::to_string(model->IdentLabel(entity)) + " (" +
-                                 what + ") has a non-finite number (INF or NaN)");
+      throw InputError(path, "entity #" + std::to_string(model->IdentLabel(entity)) + " (" + what +
+                                 ") has a non-finite number (INF or NaN)");
     }
   }
 }
@@ -144,8 +145,8 @@ void check_shape_geometry(const TopoDS_Shape& shape, const std::string& path) {
   for (int i = 1; i <= faces.Extent(); ++i) {
     const std::string why = degenerate_surface(TopoDS::Face(faces(i)));
     if (!why.empty()) {
-      throw InputError(path, "face " + std::to_string(i) + " lies on a degenerate surface (" +
-                                 why + ")");
+      throw InputError(path,
+                       "face " + std::to_string(i) + " lies on a degenerate surface (" + why + ")");
     }
   }
   TopExp::MapShapes(shape, TopAbs_SOLID, solids);
