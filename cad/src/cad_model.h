@@ -44,9 +44,9 @@ void check_brep_text(const std::string& path);
 /// Rejects a STEP model with a non-finite point, direction or vector, on
 /// which the transfer would loop forever (shape_checks.cpp). Throws InputError.
 void check_step_numbers(const Handle(StepData_StepModel) & model, const std::string& path);
-/// Rejects a shape with a non-finite vertex or bounding box, a face on a
-/// degenerate analytic surface (a radius not positive) or a solid of zero
-/// volume (shape_checks.cpp). Throws InputError.
+/// Rejects a shape with a non-finite vertex or bounding box or a face on a
+/// degenerate analytic surface (a radius not positive) (shape_checks.cpp).
+/// Throws InputError.
 void check_shape_geometry(const TopoDS_Shape& shape, const std::string& path);
 
 /// Reads `path` by extension (cad_read.cpp), in a child process when options.isolate
