@@ -26,6 +26,8 @@
 #include "rdmesh/detail/triangle_bvh.h"
 #include "rdmesh/errors.h"
 
+class StepData_StepModel;
+
 namespace rdmesh::cad {
 
 /// A shape as read from a file, with the names the file gives its solids.
@@ -35,7 +37,20 @@ struct ReadShape {
   std::vector<std::string> log;
 };
 
-/// Reads `path` by extension (cad_read.cpp). Throws InputError.
+/// Rejects a BREP text file whose section headers announce more entries than
+/// the file holds (truncated; BRepTools would read on for billions of entries)
+/// (shape_checks.cpp). Throws InputError.
+void check_brep_text(const std::string& path);
+/// Rejects a STEP model with a non-finite point, direction or vector, on
+/// which the transfer would loop forever (shape_checks.cpp). Throws InputError.
+void check_step_numbers(const Handle(StepData_StepModel) & model, const std::string& path);
+/// Rejects a shape with a non-finite vertex or bounding box or a face on a
+/// degenerate analytic surface (a radius not positive) (shape_checks.cpp).
+/// Throws InputError.
+void check_shape_geometry(const TopoDS_Shape& shape, const std::string& path);
+
+/// Reads `path` by extension (cad_read.cpp), in a child process when options.isolate
+/// (isolated_read.h). Throws InputError.
 ReadShape read_shape(const std::string& path, const CadOptions& options);
 
 /// One edge as an rdmesh Curve (cad_curve.cpp): the edge's 3D curve on

@@ -12,6 +12,7 @@
 #include <STEPControl_Reader.hxx>
 #include <ShapeFix_Shape.hxx>
 #include <ShapeFix_Solid.hxx>
+#include <StepData_StepModel.hxx>
 #include <StepRepr_RepresentationItem.hxx>
 #include <TCollection_HAsciiString.hxx>
 #include <TopExp_Explorer.hxx>
@@ -25,6 +26,7 @@
 #include <string>
 
 #include "cad_model.h"
+#include "isolated_read.h"
 
 namespace rdmesh::cad {
 namespace {
@@ -53,6 +55,7 @@ ReadShape read_step(const std::string& path) {
   if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) {
     throw InputError(path, "cannot parse the STEP file (corrupt or truncated?)");
   }
+  check_step_numbers(reader.StepModel(), path);
   if (reader.TransferRoots() == 0) throw InputError(path, "the STEP file holds no shape");
   ReadShape r;
   r.shape = reader.OneShape();
@@ -82,6 +85,7 @@ ReadShape read_iges(const std::string& path) {
 }
 
 ReadShape read_brep(const std::string& path) {
+  check_brep_text(path);
   ReadShape r;
   BRep_Builder builder;
   if (!BRepTools::Read(r.shape, path.c_str(), builder) || r.shape.IsNull()) {
@@ -138,25 +142,17 @@ void heal(ReadShape& r, const std::string& path) {
   r.log.push_back("healing: fixed the shape; before " + before + ", after " + counts(r.shape));
 }
 
-}  // namespace
-
-ReadShape read_shape(const std::string& path, const CadOptions& options) {
-  silence_opencascade();
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path, "no such file");
-  if (!std::ifstream(path).good()) throw InputError(path, "cannot open the file");
-  if (std::filesystem::file_size(path, ec) == 0) throw InputError(path, "the file is empty");
-  const std::string ext = lower_extension(path);
+// Everything about reading that runs OpenCASCADE on the file's content, which
+// may crash or loop on a malformed file: in a child process when isolated.
+ReadShape read_content(const std::string& path, const std::string& ext, const CadOptions& options) {
   ReadShape r;
   try {
     if (ext == ".step" || ext == ".stp") {
       r = read_step(path);
     } else if (ext == ".iges" || ext == ".igs") {
       r = read_iges(path);
-    } else if (ext == ".brep") {
-      r = read_brep(path);
     } else {
-      throw InputError(path, "not a CAD file extension: '" + ext + "'");
+      r = read_brep(path);
     }
     if (r.shape.IsNull()) throw InputError(path, "the file holds no shape");
     if (count(r.shape, TopAbs_SOLID) == 0) make_solids(r, path);
@@ -168,10 +164,35 @@ ReadShape read_shape(const std::string& path, const CadOptions& options) {
                                    (options.heal ? " even after healing" : "; try --heal"));
       }
     }
+    check_shape_geometry(r.shape, path);
   } catch (const Standard_Failure& e) {
     throw InputError(path, "OpenCASCADE failed to read the model: " + describe(e));
   }
   return r;
+}
+
+}  // namespace
+
+ReadShape read_shape(const std::string& path, const CadOptions& options) {
+  silence_opencascade();
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path, "no such file");
+  if (!std::ifstream(path).good()) throw InputError(path, "cannot open the file");
+  if (std::filesystem::file_size(path, ec) == 0) throw InputError(path, "the file is empty");
+  const std::string ext = lower_extension(path);
+  std::string format;
+  if (ext == ".step" || ext == ".stp") {
+    format = "STEP";
+  } else if (ext == ".iges" || ext == ".igs") {
+    format = "IGES";
+  } else if (ext == ".brep") {
+    format = "BREP";
+  } else {
+    throw InputError(path, "not a CAD file extension: '" + ext + "'");
+  }
+  if (!options.isolate) return read_content(path, ext, options);
+  return read_in_child(
+      path, format, [&] { return read_content(path, ext, options); }, options);
 }
 
 void silence_opencascade() {

@@ -46,6 +46,7 @@
 // InputError (while loading) or OracleError (in queries).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -62,6 +63,19 @@ struct CadOptions {
   bool heal = false;
   /// Check the B-rep with BRepCheck_Analyzer and reject an invalid one.
   bool check_validity = true;
+  /// Read the file in a forked child process (POSIX; elsewhere in this one):
+  /// a crash, an endless loop or a runaway allocation of OpenCASCADE's reader
+  /// on a malformed file becomes an InputError instead of taking the host
+  /// down. The shape comes back in OpenCASCADE's binary format, bit for bit.
+  /// false: read in this process (no fork; no protection).
+  bool isolate = true;
+  /// Isolated reading: wall-clock seconds the child may take to read, sew,
+  /// heal and check the model (a CPU-time limit a little above it backs it up).
+  double read_time_limit = 60;
+  /// Isolated reading: how much address space the child may add to what it
+  /// inherits, MiB; 0 is half the physical memory. Not applied under
+  /// AddressSanitizer, which reserves far more address space than it uses.
+  std::size_t read_memory_limit_mib = 0;
 };
 
 /// A B-rep model as a DomainOracle (see the file comment).

@@ -1,0 +1,58 @@
+// The CLI on every malformed CAD file of the shared data's bad/ folder (files
+// added there later are covered too): exit 2, one line "rdmesh: error: FILE:
+// problem", within seconds, and nothing left in the working directory. The
+// files crash or hang OpenCASCADE's readers when read in the process itself.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "cli/cli_runner.h"
+#include "rdmesh/cad_oracle.h"
+#include "shared_data.h"
+
+namespace rdmesh::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The CAD files of bad/ (the other kinds are the readers' own tests' business).
+std::vector<fs::path> bad_cad_files(const std::string& dir) {
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    if (entry.is_regular_file() && is_cad_file(entry.path().string())) {
+      files.push_back(entry.path());
+    }
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+TEST(CadBadFiles, EachFailsWithOneLineExitTwoAndNoOutput) {
+  RDMESH_REQUIRE_SHARED_DATA(dir, "bad");
+  const std::vector<fs::path> files = bad_cad_files(dir);
+  EXPECT_GE(files.size(), 7u) << dir;
+  for (const fs::path& file : files) {
+    SCOPED_TRACE(file.string());
+    ScratchDir scratch;
+    const auto start = std::chrono::steady_clock::now();
+    // -q: nothing on stdout, so the captured output is stderr alone.
+    const CliRun run = run_cli("'" + file.string() + "' -o out.mesh -q", scratch.path());
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_EQ(run.exit_code, 2) << run.output;
+    EXPECT_LT(seconds, 10.0);
+    EXPECT_EQ(run.output.rfind("rdmesh: error: ", 0), 0u) << run.output;
+    EXPECT_NE(run.output.find(file.filename().string()), std::string::npos) << run.output;
+    ASSERT_FALSE(run.output.empty());
+    EXPECT_EQ(run.output.back(), '\n') << run.output;
+    EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << run.output;
+    EXPECT_EQ(scratch.entries(), 0u) << "an output or temporary file was left behind";
+  }
+}
+
+}  // namespace
+}  // namespace rdmesh::test
