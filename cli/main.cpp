@@ -21,13 +21,14 @@
 namespace {
 
 int fail(int code, const std::string& message) {
-  std::fprintf(stderr, "rdmesh: error: %s\n", message.c_str());
+  std::fprintf(stderr, "rdmesh: error: %s\n", rdmesh::cli::printable(message).c_str());
   return code;
 }
 
 int run(const rdmesh::cli::Options& opt) {
   using namespace rdmesh;
   const auto start = std::chrono::steady_clock::now();
+  cli::check_paths(opt);
   (void)format_from_path(opt.output);  // unknown extension: fail before meshing
   cli::check_writable(opt.output);
   if (!opt.report.empty()) cli::check_writable(opt.report);

@@ -41,10 +41,8 @@ void check_output(const DomainOracle& oracle, bool surface_only, MeshResult& res
 detail::ProtectionPlanner make_planner(const DomainOracle& oracle, const Criteria& criteria) {
   std::vector<detail::ProtectedCurve> curves;
   for (const CurveInfo& info : oracle.curves()) curves.push_back({info, &oracle.curve(info.id)});
-  const double min_size =
-      criteria.min_size > 0 ? criteria.min_size : 1e-4 * oracle.bounding_box().diagonal();
-  return detail::ProtectionPlanner(std::move(curves), oracle.corners(), criteria, min_size,
-                                   &oracle);
+  return detail::ProtectionPlanner(std::move(curves), oracle.corners(), criteria,
+                                   criteria.min_size, &oracle);
 }
 
 void record_protection(const detail::ProtectionPlan& plan,
@@ -64,9 +62,11 @@ void record_protection(const detail::ProtectionPlan& plan,
 
 }  // namespace
 
-MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& criteria,
+MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& given,
                          const MeshOptions& options) {
-  criteria.validate();
+  given.validate();
+  Criteria criteria = given;  // the minimum size resolved once, for every stage
+  criteria.min_size = given.min_size_for(oracle.bounding_box());
   const bool protect = options.features == FeatureMethod::kProtectingBalls &&
                        !(oracle.curves().empty() && oracle.corners().empty());
   auto t = std::chrono::steady_clock::now();
