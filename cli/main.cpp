@@ -110,7 +110,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForAllHelp& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    return fail(2, e.what());
+    return fail(2, (opt.input.empty() ? std::string() : opt.input + ": ") + e.what());
   }
   try {
     return run(opt);
