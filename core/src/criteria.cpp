@@ -57,9 +57,8 @@ void check_field(const ScalarField& f, const char* what, const Box3& box, double
                        "; it must be positive and finite everywhere in the box");
     }
     if (v < min_size) {
-      throw InputError(std::string(what) + " " + g(v) + at +
-                       " is below the minimum size " + g(min_size) +
-                       " (no two vertices come closer): the run could not reach it");
+      throw InputError(std::string(what) + " " + g(v) + at + " is below the minimum size " +
+                       g(min_size) + " (no two vertices come closer): the run could not reach it");
     }
   };
   if (f.is_uniform()) {
@@ -94,8 +93,10 @@ void Criteria::validate() const {
                      " is below 2, RR-7912's bound for termination: refinement might not end");
   }
   if (!(facet_angle_deg > 0.0 && facet_angle_deg <= 30.0)) {
-    throw InputError("facet angle must be in (0, 30] degrees (above 30 refinement might not "
-                     "end), got " + g(facet_angle_deg));
+    throw InputError(
+        "facet angle must be in (0, 30] degrees (above 30 refinement might not "
+        "end), got " +
+        g(facet_angle_deg));
   }
   if (!(min_size >= 0.0) || !std::isfinite(min_size)) {
     throw InputError("minimum size must be >= 0, got " + g(min_size));
@@ -121,8 +122,7 @@ ElementEstimate estimate_elements(const Criteria& c, const Box3& box, double cur
   return out;
 }
 
-void check_feasible(const Criteria& c, const Box3& box, double curve_length,
-                    double max_elements) {
+void check_feasible(const Criteria& c, const Box3& box, double curve_length, double max_elements) {
   c.validate();
   const double min_size = c.min_size_for(box);
   check_field(c.edge_size, "edge size", box, min_size);

@@ -41,8 +41,8 @@ void check_output(const DomainOracle& oracle, bool surface_only, MeshResult& res
 detail::ProtectionPlanner make_planner(const DomainOracle& oracle, const Criteria& criteria) {
   std::vector<detail::ProtectedCurve> curves;
   for (const CurveInfo& info : oracle.curves()) curves.push_back({info, &oracle.curve(info.id)});
-  return detail::ProtectionPlanner(std::move(curves), oracle.corners(), criteria,
-                                   criteria.min_size, &oracle);
+  return detail::ProtectionPlanner(std::move(curves), oracle.corners(), criteria, criteria.min_size,
+                                   &oracle);
 }
 
 void record_protection(const detail::ProtectionPlan& plan,

@@ -141,8 +141,7 @@ void check_curve_length(const std::function<Point3(double)>& gamma, double t0, d
 }
 
 void check_distinct_curves(const std::vector<std::pair<std::string, const Curve*>>& curves,
-                           const std::vector<std::pair<double, double>>& ranges,
-                           double diagonal) {
+                           const std::vector<std::pair<double, double>>& ranges, double diagonal) {
   std::vector<double> lengths;
   for (std::size_t a = 0; a < curves.size(); ++a) {
     lengths.push_back(curves[a].second->length(ranges[a].first, ranges[a].second));

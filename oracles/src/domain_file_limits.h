@@ -14,7 +14,7 @@
 
 namespace rdmesh::detail {
 
-inline constexpr int kMaxJsonDepth = 64;              ///< nested arrays and objects
+inline constexpr int kMaxJsonDepth = 64;                    ///< nested arrays and objects
 inline constexpr std::size_t kMaxExpressionLength = 10000;  ///< characters
 inline constexpr std::size_t kMaxSubdomains = 64;
 inline constexpr std::size_t kMaxCurves = 1000;
@@ -47,7 +47,6 @@ void check_curve_length(const std::function<Point3(double)>& gamma, double t0, d
 /// Refuses two curves that are the same curve: equal length (1e-9 relative) and 7
 /// inner points of the first within 1e-7 box diagonals of the second.
 void check_distinct_curves(const std::vector<std::pair<std::string, const Curve*>>& curves,
-                           const std::vector<std::pair<double, double>>& ranges,
-                           double diagonal);
+                           const std::vector<std::pair<double, double>>& ranges, double diagonal);
 
 }  // namespace rdmesh::detail

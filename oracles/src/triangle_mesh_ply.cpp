@@ -137,7 +137,8 @@ long long remaining_bytes(std::istream& in) {
 /// Refuses, before anything is allocated, element counts the rest of the file cannot
 /// hold: an element takes at least its scalar sizes plus its lists' count sizes in a
 /// binary body, and at least 2 bytes (a digit and a separator) per property in an
-/// ASCII one (the last may lack its separator). An element without properties is refused unless its count is 0.
+/// ASCII one (the last may lack its separator). An element without properties is refused unless its
+/// count is 0.
 void check_counts(const std::vector<Element>& elements, int format, long long remaining,
                   const std::string& file) {
   long double need = 0;
@@ -154,7 +155,8 @@ void check_counts(const std::vector<Element>& elements, int format, long long re
     if (remaining >= 0 && need > remaining + (format == 0 ? 1 : 0)) {  // ASCII: no final newline
       throw InputError(file, "PLY header declares " + std::to_string(e.count) + " '" + e.name +
                                  "' items, but the file ends early: the " +
-                                 std::to_string(remaining) + " bytes after the header cannot hold them");
+                                 std::to_string(remaining) +
+                                 " bytes after the header cannot hold them");
     }
   }
 }

@@ -1,16 +1,14 @@
 // Hostile input and absurd criteria (issue 23): each is refused up front with exit
 // code 2 and one line naming the file, in well under a second, leaving no file.
 #include <gtest/gtest.h>
-
 #include <sys/stat.h>
 
 #include <algorithm>
 #include <chrono>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "cli_runner.h"
 #include "shared_data.h"
@@ -35,16 +33,17 @@ std::string cylinder_with(const std::string& curves) {
 }
 
 std::string rim(const std::string& name, double turns) {
-  return R"({"name": ")" + name + R"j(", "x": "0.5*cos(t)", "y": "0.5*sin(t)", "z": "0.6", "t": [0, )j" +
+  return R"({"name": ")" + name +
+         R"j(", "x": "0.5*cos(t)", "y": "0.5*sin(t)", "z": "0.6", "t": [0, )j" +
          std::to_string(turns * 6.283185307179586) + "]}";
 }
 
 struct Refused {
   std::string name;
-  std::string input;       ///< file name in the scratch directory
-  std::string text;        ///< its content
-  std::string args;        ///< after "INPUT -q -o out.msh"
-  std::string expected;    ///< substring of the message
+  std::string input;     ///< file name in the scratch directory
+  std::string text;      ///< its content
+  std::string args;      ///< after "INPUT -q -o out.msh"
+  std::string expected;  ///< substring of the message
 };
 
 /// Runs `input args` in `dir` and checks the refusal contract: the line starts with
@@ -117,10 +116,8 @@ std::vector<Refused> cases() {
        R"({"bbox": [-1e-12,-1e-12,-1e-12,1e-12,1e-12,1e-12], "functions": {"s": "x^2+y^2+z^2-1e-25"}})",
        "", "'bbox' extent along x 2e-12 is below 1e-6"},
       {"nesting_bomb", "in.json", deep, "", "nested deeper than 64"},
-      {"long_expression", "in.json", domain(long_sum), "",
-       "at most 10000"},
-      {"million_turns", "in.json", cylinder_with(one_rim), "",
-       "curve 'rim': it turns at least"},
+      {"long_expression", "in.json", domain(long_sum), "", "at most 10000"},
+      {"million_turns", "in.json", cylinder_with(one_rim), "", "curve 'rim': it turns at least"},
       {"fifty_identical_curves", "in.json", cylinder_with(fifty), "",
        "curves 'c0' and 'c1' are the same curve"},
       // PLY headers that the file cannot hold.
@@ -168,8 +165,9 @@ TEST(CliLimits, AnOutputThatIsTheInputOrAnotherOutputIsRefused) {
   dir.write("in.json", kSphere);
   expect_refused(dir, "in.json", "-o out.msh --report in.json", "--report in.json is the input", 1);
   expect_refused(dir, "in.json", "-o ./in.json", "-o ./in.json is the input", 1);
-  expect_refused(dir, "in.json", "-o out.msh --picture ../" + dir.path().filename().string() +
-                                     "/in.json", "is the input", 1);
+  expect_refused(dir, "in.json",
+                 "-o out.msh --picture ../" + dir.path().filename().string() + "/in.json",
+                 "is the input", 1);
   expect_refused(dir, "in.json", "-o out.msh --report out.msh", "is also the -o output", 1);
   std::ifstream in(dir.file("in.json"));
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -186,8 +184,8 @@ TEST(CliLimits, ParseErrorsNameTheOption) {
 TEST(CliLimits, ReportShowsTheMinimumSizeUsed) {
   ScratchDir dir;
   dir.write("in.json", kSphere);
-  const CliRun run = run_cli("in.json -q --size 0.4 --no-exude -o out.msh --report r.json",
-                             dir.path());
+  const CliRun run =
+      run_cli("in.json -q --size 0.4 --no-exude -o out.msh --report r.json", dir.path());
   ASSERT_EQ(run.exit_code, 0) << run.output;
   std::ifstream in(dir.file("r.json"));
   const nlohmann::json report = nlohmann::json::parse(in);

@@ -35,9 +35,9 @@ TEST(DomainFileLimits, NestingIsCountedOutsideStringsAndComments) {
   EXPECT_NO_THROW(parse_domain_json("// " + brackets + "\n/* " + brackets + " */ {" + kBallIn2 +
                                         R"(, "description": ")" + brackets + "\"}",
                                     "limits.json"));
-  expect_refused("{" + kBallIn2 + R"(, "size": )" + std::string(65, '[') + "1" +
-                     std::string(65, ']') + "}",
-                 "nested deeper than 64 levels");
+  expect_refused(
+      "{" + kBallIn2 + R"(, "size": )" + std::string(65, '[') + "1" + std::string(65, ']') + "}",
+      "nested deeper than 64 levels");
 }
 
 TEST(DomainFileLimits, ListsAndExpressionsAreBounded) {
@@ -47,8 +47,8 @@ TEST(DomainFileLimits, ListsAndExpressionsAreBounded) {
   const std::string point = "[0, 0, 1]";
   expect_refused("{" + kBallIn2 + R"(, "curves": [{"points": [)" + repeated(point, 100001) + "]}]}",
                  "too many points (100001), at most 100000");
-  expect_refused("{" + kBallIn2 + R"(, "curves": [)" + repeated(R"({"points": [[0,0,1],[0,1,0]]})", 1001) +
-                     "]}",
+  expect_refused("{" + kBallIn2 + R"(, "curves": [)" +
+                     repeated(R"({"points": [[0,0,1],[0,1,0]]})", 1001) + "]}",
                  "too many curves (1001), at most 1000");
   std::string sum = "0.1";
   for (int i = 0; i < 5000; ++i) sum += "+0";
@@ -60,7 +60,8 @@ TEST(DomainFileLimits, BoxesDoublePrecisionCannotMeshAreRefused) {
   const std::string f = R"(, "functions": {"b": "x^2+y^2+z^2-1e-20"}})";
   expect_refused(R"({"bbox": [-1e-9,-1e-9,-1e-9,1e-9,1e-9,1e-9])" + f, "below 1e-6");
   expect_refused(R"({"bbox": [-100,-100,-1e-5,100,100,1e-5])" + f, "the box is flat");
-  expect_refused(R"({"bbox": [1e9,1e9,1e9,1000000001,1000000001,1000000001])" + f, "double precision");
+  expect_refused(R"({"bbox": [1e9,1e9,1e9,1000000001,1000000001,1000000001])" + f,
+                 "double precision");
 }
 
 TEST(DomainFileLimits, DomainsReachingTheBoxAreRefused) {
