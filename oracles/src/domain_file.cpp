@@ -241,6 +241,8 @@ class Parser {
     std::vector<std::pair<std::string, const Curve*>> named;
     std::vector<std::pair<double, double>> ranges;
     for (const auto& spec : out) {
+      checked([&] { detail::check_no_self_overlap(*spec.curve, spec.t_begin, spec.t_end, diagonal_); },
+              "curve '" + spec.name + "': ");
       named.emplace_back(spec.name, spec.curve.get());
       ranges.emplace_back(spec.t_begin, spec.t_end);
     }

@@ -140,6 +140,33 @@ void check_curve_length(const std::function<Point3(double)>& gamma, double t0, d
   }
 }
 
+void check_no_self_overlap(const Curve& curve, double t0, double t1, double diagonal) {
+  constexpr int kPoints = 64, kOverlapping = 4;
+  const double length = curve.length(t0, t1), step = length / kPoints;
+  if (!(length > 0)) return;
+  int overlapping = 0;
+  Point3 first;
+  for (int i = 0; i < kPoints; ++i) {
+    const double s = (i + 0.5) * step;
+    const double t = curve.parameter_at_length(t0, s);
+    const Point3 p = curve.point(t);
+    const double before = curve.parameter_at_length(t0, std::max(0.0, s - step));
+    const double after = curve.parameter_at_length(t0, std::min(length, s + step));
+    double nearest = INFINITY;
+    if (before > t0) nearest = distance(p, curve.point(curve.closest(p, t0, before)));
+    if (after < t1)
+      nearest = std::min(nearest, distance(p, curve.point(curve.closest(p, after, t1))));
+    if (nearest <= 1e-7 * diagonal && overlapping++ == 0) first = p;
+  }
+  if (overlapping >= kOverlapping) {
+    throw InputError("it runs over itself (" + std::to_string(overlapping) + " of " +
+                     std::to_string(kPoints) +
+                     " points at equal arc length lie on another part "
+                     "of it, e.g. " +
+                     where(first) + "): give each part once (check the 't' range)");
+  }
+}
+
 void check_distinct_curves(const std::vector<std::pair<std::string, const Curve*>>& curves,
                            const std::vector<std::pair<double, double>>& ranges, double diagonal) {
   std::vector<double> lengths;

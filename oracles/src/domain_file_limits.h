@@ -44,6 +44,12 @@ void check_domain_inside_box(const DomainOracle& oracle);
 void check_curve_length(const std::function<Point3(double)>& gamma, double t0, double t1,
                         double diagonal);
 
+/// Refuses a curve that runs over itself (a circle traversed twice, a path going back
+/// along itself): at least 4 of 64 points at equal arc length lie within 1e-7 box
+/// diagonals of the curve outside their own stretch (one arc-length step each side).
+/// A curve crossing itself at isolated points passes.
+void check_no_self_overlap(const Curve& curve, double t0, double t1, double diagonal);
+
 /// Refuses two curves that are the same curve: equal length (1e-9 relative) and 7
 /// inner points of the first within 1e-7 box diagonals of the second.
 void check_distinct_curves(const std::vector<std::pair<std::string, const Curve*>>& curves,

@@ -83,6 +83,8 @@ std::vector<Refused> cases() {
     fifty += rim(std::string("c").append(std::to_string(i)), 1);
   }
   fifty += "]";
+  std::string twice = "[";
+  twice.append(rim("rim", 2)).append("]");
   std::string long_sum = "x";  // appends: GCC 12 warns (-Wrestrict) on "literal" + string
   long_sum.append(20000, '+').append("1");
   std::string one_rim = "[";
@@ -118,6 +120,7 @@ std::vector<Refused> cases() {
       {"nesting_bomb", "in.json", deep, "", "nested deeper than 64"},
       {"long_expression", "in.json", domain(long_sum), "", "at most 10000"},
       {"million_turns", "in.json", cylinder_with(one_rim), "", "curve 'rim': it turns at least"},
+      {"circle_traversed_twice", "in.json", cylinder_with(twice), "", "runs over itself"},
       {"fifty_identical_curves", "in.json", cylinder_with(fifty), "",
        "curves 'c0' and 'c1' are the same curve"},
       // PLY headers that the file cannot hold.

@@ -83,6 +83,10 @@ TEST(DomainFileLimits, RunawayAndDuplicateCurvesAreRefused) {
                  "curve 'r': it turns at least");
   expect_refused(head + R"({"name": "r", "x": "t", "y": "0", "z": "0.6", "t": [0, 1e6]}]})",
                  "more than 1000 box diagonals");
+  expect_refused(head + R"({"name": "twice", )" + circle + "12.566370614359172]}]}",
+                 "curve 'twice': it runs over itself (64 of 64 points");
+  expect_refused(head + R"({"name": "and_a_half", )" + circle + "9.42477796076938]}]}",
+                 "curve 'and_a_half': it runs over itself");
   expect_refused(head + R"({"name": "a", )" + circle + R"(6.283185307179586]}, {"name": "b", )" +
                      circle + "6.283185307179586]}]}",
                  "curves 'a' and 'b' are the same curve");
