@@ -2,24 +2,18 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 #include "rdmesh/errors.h"
+#include "rdmesh/number_text.h"
 
 namespace rdmesh {
 namespace {
 
-/// A number for a message: %g, so tiny values never print as 0.000000.
-std::string g(double v) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%g", v);
-  return buffer;
-}
-
 void require_positive(double v, const char* what) {
   if (!(v > 0.0) || !std::isfinite(v)) {
-    throw InputError(std::string(what) + " must be a positive finite number, got " + g(v));
+    throw InputError(std::string(what) + " must be a positive finite number, got " +
+                     short_number(v));
   }
 }
 
@@ -45,20 +39,19 @@ void for_each_sample(const Box3& box, Visit&& visit) {
   }
 }
 
-std::string where(const Point3& p) { return "(" + g(p.x) + ", " + g(p.y) + ", " + g(p.z) + ")"; }
-
 /// A size field positive, finite and not below `min_size` at every sample.
 void check_field(const ScalarField& f, const char* what, const Box3& box, double min_size) {
   auto check = [&](const Point3& p) {
     const double v = f(p);
-    const std::string at = f.is_uniform() ? "" : " at " + where(p);
+    const std::string at = f.is_uniform() ? "" : " at " + point_text(p);
     if (!(v > 0.0) || !std::isfinite(v)) {
-      throw InputError(std::string(what) + " is " + g(v) + at +
+      throw InputError(std::string(what) + " is " + short_number(v) + at +
                        "; it must be positive and finite everywhere in the box");
     }
     if (v < min_size) {
-      throw InputError(std::string(what) + " " + g(v) + at + " is below the minimum size " +
-                       g(min_size) + " (no two vertices come closer): the run could not reach it");
+      throw InputError(std::string(what) + " " + short_number(v) + at +
+                       " is below the minimum size " + short_number(min_size) +
+                       " (no two vertices come closer): the run could not reach it");
     }
   };
   if (f.is_uniform()) {
@@ -89,17 +82,17 @@ void Criteria::validate() const {
   require_positive(facet_distance, "facet distance");
   require_positive(cell_radius_edge, "radius-edge bound");
   if (cell_radius_edge < 2.0) {
-    throw InputError("radius-edge bound " + g(cell_radius_edge) +
+    throw InputError("radius-edge bound " + short_number(cell_radius_edge) +
                      " is below 2, RR-7912's bound for termination: refinement might not end");
   }
   if (!(facet_angle_deg > 0.0 && facet_angle_deg <= 30.0)) {
     throw InputError(
         "facet angle must be in (0, 30] degrees (above 30 refinement might not "
         "end), got " +
-        g(facet_angle_deg));
+        short_number(facet_angle_deg));
   }
   if (!(min_size >= 0.0) || !std::isfinite(min_size)) {
-    throw InputError("minimum size must be >= 0, got " + g(min_size));
+    throw InputError("minimum size must be >= 0, got " + short_number(min_size));
   }
 }
 
@@ -131,9 +124,10 @@ void check_feasible(const Criteria& c, const Box3& box, double curve_length, dou
   check_field(ScalarField::uniform(c.facet_distance), "facet distance", box, min_size);
   const ElementEstimate n = estimate_elements(c, box, curve_length);
   if (!(n.total() <= max_elements)) {
-    throw InputError("the sizes imply about " + g(n.total()) + " elements (" + g(n.tetrahedra) +
-                     " tetrahedra, " + g(n.triangles) + " boundary triangles, " + g(n.edges) +
-                     " curve edges), above the limit of " + g(max_elements) +
+    throw InputError("the sizes imply about " + short_number(n.total()) + " elements (" +
+                     short_number(n.tetrahedra) + " tetrahedra, " + short_number(n.triangles) +
+                     " boundary triangles, " + short_number(n.edges) +
+                     " curve edges), above the limit of " + short_number(max_elements) +
                      ": coarsen the sizes, or raise the limit with --max-elements N");
   }
 }

@@ -2,23 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "rdmesh/curve.h"
 #include "rdmesh/errors.h"
+#include "rdmesh/number_text.h"
 
 namespace rdmesh::detail {
-namespace {
-
-std::string g(double v) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%g", v);
-  return buffer;
-}
-
-std::string where(const Point3& p) { return "(" + g(p.x) + ", " + g(p.y) + ", " + g(p.z) + ")"; }
-
-}  // namespace
 
 void check_json_depth(const std::string& text) {
   int depth = 0;
@@ -60,17 +49,19 @@ void check_box_size(const Box3& box) {
   const char* axis = "xyz";
   const double extent[3] = {e.x, e.y, e.z};
   for (int k = 0; k < 3; ++k) {
-    const std::string what = std::string("'bbox' extent along ") + axis[k] + " " + g(extent[k]);
+    const std::string what =
+        std::string("'bbox' extent along ") + axis[k] + " " + short_number(extent[k]);
     if (!std::isfinite(extent[k]) || extent[k] > 1e12) throw InputError(what + " is above 1e12");
     if (extent[k] < 1e-6) {
       throw InputError(what + " is below 1e-6: scale the functions to larger units");
     }
     if (extent[k] < 1e-6 * largest) {
-      throw InputError(what + " is below 1e-6 of the largest extent " + g(largest) +
+      throw InputError(what + " is below 1e-6 of the largest extent " + short_number(largest) +
                        ": the box is flat");
     }
     if (extent[k] < 1e-6 * magnitude) {
-      throw InputError(what + " is below 1e-6 of its coordinates' magnitude " + g(magnitude) +
+      throw InputError(what + " is below 1e-6 of its coordinates' magnitude " +
+                       short_number(magnitude) +
                        ": double precision cannot resolve it (move the box near the origin)");
     }
   }
@@ -96,7 +87,7 @@ void check_domain_inside_box(const DomainOracle& oracle) {
           for (const SubdomainInfo& info : oracle.subdomains()) {
             if (info.id == s) name = "'" + info.name + "'";
           }
-          throw InputError("the domain reaches the bounding box: " + where(p) +
+          throw InputError("the domain reaches the bounding box: " + point_text(p) +
                            ", on the box, is inside subdomain " + name +
                            " (the box must contain the whole domain; check the functions' "
                            "signs, negative inside)");
@@ -129,14 +120,16 @@ void check_curve_length(const std::function<Point3(double)>& gamma, double t0, d
     }
   }
   if (!(length <= kMaxCurveLengthInDiagonals * diagonal)) {
-    throw InputError("it is at least " + g(length) + " long (" + std::to_string(kChords) +
-                     " chords), more than " + g(kMaxCurveLengthInDiagonals) +
+    throw InputError("it is at least " + short_number(length) + " long (" +
+                     std::to_string(kChords) + " chords), more than " +
+                     short_number(kMaxCurveLengthInDiagonals) +
                      " box diagonals (check the 't' range)");
   }
   const double turns = turning / (2 * 3.141592653589793);
   if (turns > kMaxCurveTurns) {
-    throw InputError("it turns at least " + g(turns) + " times (" + std::to_string(kChords) +
-                     " chords), more than " + g(kMaxCurveTurns) + " (check the 't' range)");
+    throw InputError("it turns at least " + short_number(turns) + " times (" +
+                     std::to_string(kChords) + " chords), more than " +
+                     short_number(kMaxCurveTurns) + " (check the 't' range)");
   }
 }
 
@@ -163,7 +156,7 @@ void check_no_self_overlap(const Curve& curve, double t0, double t1, double diag
                      std::to_string(kPoints) +
                      " points at equal arc length lie on another part "
                      "of it, e.g. " +
-                     where(first) + "): give each part once (check the 't' range)");
+                     point_text(first) + "): give each part once (check the 't' range)");
   }
 }
 
