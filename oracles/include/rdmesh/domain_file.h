@@ -24,7 +24,7 @@
 //   "size", "edge_size", "facet_size", "cell_size": positive number, or expression of x, y, z
 //       that must be positive and finite at the box center;
 //   "facet_distance", "radius_edge": positive finite numbers;
-//   "facet_angle": degrees, in (0, 60).
+//   "facet_angle": degrees, in (0, 60) here; criteria above 30 are refused (Criteria::validate).
 //
 // Limits (oracles/src/domain_file_limits.h): nesting at most 64 deep (checked on the
 // raw text), expressions at most 10000 characters, at most 64 subdomains, 1000 curves,
