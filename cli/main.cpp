@@ -11,6 +11,7 @@
 
 #include "rdmesh/errors.h"
 #include "rdmesh/fidelity.h"
+#include "rdmesh/number_text.h"
 #include "rdmesh/mesh_writers.h"
 #include "rdmesh/mesher.h"
 #include "rdmesh/quality_report.h"
@@ -23,19 +24,14 @@
 namespace {
 
 int fail(int code, const std::string& message) {
-  std::fprintf(stderr, "rdmesh: error: %s\n", message.c_str());
+  std::fprintf(stderr, "rdmesh: error: %s\n", rdmesh::cli::printable(message).c_str());
   return code;
-}
-
-std::string seconds(double s) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%g", s);
-  return buffer;
 }
 
 int run(const rdmesh::cli::Options& opt) {
   using namespace rdmesh;
   const auto start = std::chrono::steady_clock::now();
+  cli::check_paths(opt);
   (void)format_from_path(opt.output);  // unknown extension: fail before meshing
   cli::check_writable(opt.output);
   if (!opt.report.empty()) cli::check_writable(opt.report);
@@ -115,7 +111,8 @@ int run(const rdmesh::cli::Options& opt) {
   if (!bad) return 0;
   const std::string what =
       result.stats.time_limit_reached
-          ? "refinement stopped at the time limit (" + seconds(opt.time_limit) + " s) with " + std::to_string(result.stats.elements_left) +
+          ? "refinement stopped at the time limit (" + short_number(opt.time_limit) +
+                " s) with " + std::to_string(result.stats.elements_left) +
                 " elements still queued"
           : "the mesh does not match the model: " + summarize_problems(*fidelity);
   return fail(4, opt.input + ": " + what +
@@ -139,7 +136,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForAllHelp& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    return fail(2, e.what());
+    return fail(2, (opt.input.empty() ? std::string() : opt.input + ": ") + e.what());
   }
   try {
     return run(opt);

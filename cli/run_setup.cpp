@@ -38,6 +38,9 @@ void add_options(CLI::App& app, Options& opt) {
   app.add_option("--radius-edge", opt.radius_edge, "Max radius-edge ratio of tetrahedra (default 2)");
   app.add_option("--min-size", opt.min_size,
                  "Termination guard: no two vertices closer than this (default 1e-4 of the box diagonal)");
+  app.add_option("--max-elements", opt.max_elements,
+                 "Refuse criteria whose estimated element count exceeds this (default 5e7)")
+      ->check(CLI::PositiveNumber);
   app.add_flag("--no-exude", opt.no_exude, "Skip sliver exudation after refinement");
   const CLI::Validator seconds(
       [](std::string& v) -> std::string {
@@ -125,6 +128,67 @@ LoadedInput load_input(const Options& opt) {
                                "' (expected .json, .step, .stp, .brep, .iges, .igs, .off, .stl, .obj or .ply)");
 }
 
+namespace {
+
+/// Whether `a` and `b` name the same file (existing or not).
+bool same_file(const fs::path& a, const fs::path& b) {
+  std::error_code ec;
+  if (fs::equivalent(a, b, ec)) return true;
+  const fs::path ca = fs::weakly_canonical(a, ec);
+  if (ec) return false;
+  const fs::path cb = fs::weakly_canonical(b, ec);
+  return !ec && ca == cb;
+}
+
+}  // namespace
+
+void check_paths(const Options& opt) {
+  std::error_code ec;
+  const fs::file_status status = fs::status(opt.input, ec);
+  if (!fs::exists(status)) throw InputError(opt.input, "no such file");
+  if (fs::is_directory(status)) throw InputError(opt.input, "is a directory");
+  if (!fs::is_regular_file(status)) throw InputError(opt.input, "not a regular file");
+  if (::access(opt.input.c_str(), R_OK) != 0) {
+    throw InputError(opt.input, "cannot read the file (permission denied)");
+  }
+  const std::pair<const char*, const std::string*> outputs[] = {
+      {"-o", &opt.output}, {"--report", &opt.report}, {"--picture", &opt.picture.path}};
+  for (std::size_t i = 0; i < std::size(outputs); ++i) {
+    const std::string& out = *outputs[i].second;
+    if (out.empty()) continue;
+    if (same_file(opt.input, out)) {
+      throw InputError(opt.input, std::string(outputs[i].first) + " " + out +
+                                      " is the input file: it would be overwritten");
+    }
+    for (std::size_t j = 0; j < i; ++j) {
+      if (!outputs[j].second->empty() && same_file(*outputs[j].second, out)) {
+        throw InputError(opt.input, std::string(outputs[i].first) + " " + out + " is also the " +
+                                        outputs[j].first + " output: give them different names");
+      }
+    }
+  }
+}
+
+std::string printable(const std::string& message) {
+  std::string out;
+  for (const char c : message) {
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '\n') {
+      out += "\\n";
+    } else if (c == '\r') {
+      out += "\\r";
+    } else if (c == '\t') {
+      out += "\\t";
+    } else if (u < 0x20 || u == 0x7f) {
+      static const char* hex = "0123456789abcdef";
+      out += {'\\', 'x', hex[u >> 4], hex[u & 15]};
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
 void check_writable(const std::string& path) {
   const fs::path dir = fs::path(path).has_parent_path() ? fs::path(path).parent_path() : ".";
   std::error_code ec;
@@ -173,6 +237,12 @@ Criteria resolve_criteria(const Options& opt, const LoadedInput& input) {
   }
   try {
     c.validate();
+    c.min_size = c.min_size_for(input.oracle->bounding_box());  // the report shows it
+    double curve_length = 0;
+    for (const CurveInfo& info : input.oracle->curves()) {
+      curve_length += input.oracle->curve(info.id).length(info.t_begin, info.t_end);
+    }
+    check_feasible(c, input.oracle->bounding_box(), curve_length, opt.max_elements);
   } catch (const InputError& e) {
     throw InputError(opt.input, e.what());
   }

@@ -24,6 +24,7 @@ struct Options {
   std::string output;  ///< default: the input's stem + ".msh" in the current directory
   std::optional<double> size, edge_size, facet_size, cell_size, facet_distance, facet_angle, radius_edge,
       min_size;
+  double max_elements = kDefaultMaxElements;  ///< --max-elements: limit of the size estimate
   bool no_exude = false;                     ///< --no-exude
   double exude_time_limit = 0;               ///< --exude-time-limit SECONDS, 0 = none
   std::string report;  ///< JSON report path, empty = none
@@ -52,10 +53,20 @@ struct LoadedInput {
 /// InputError naming the file.
 LoadedInput load_input(const Options& opt);
 
+/// Before anything else: the input exists and is a regular readable file, and no
+/// output (-o, --report, --picture) is the input or another output. Throws
+/// InputError naming the input.
+void check_paths(const Options& opt);
+
+/// `message` with control characters escaped (\n, \t, \xNN): one printable line.
+std::string printable(const std::string& message);
+
 /// Throws OutputError early (before meshing) when `path` cannot be written.
 void check_writable(const std::string& path);
 
-/// Bounding-box defaults, overridden by the file's hints, overridden by options.
+/// Bounding-box defaults, overridden by the file's hints, overridden by options; the
+/// minimum size resolved (1e-4 of the box diagonal unless given); criteria that cannot
+/// give a bounded mesh (check_feasible, with opt.max_elements) refused with InputError.
 Criteria resolve_criteria(const Options& opt, const LoadedInput& input);
 
 /// The optimizers' settings from the options (--no-exude, --exude-time-limit).

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "rdmesh/errors.h"
+#include "rdmesh/number_text.h"
 
 #include "optimize/sliver_exuder.h"
 #include "refiner.h"
@@ -43,9 +44,7 @@ void check_output(const DomainOracle& oracle, bool surface_only, MeshResult& res
 detail::ProtectionPlanner make_planner(const DomainOracle& oracle, const Criteria& criteria) {
   std::vector<detail::ProtectedCurve> curves;
   for (const CurveInfo& info : oracle.curves()) curves.push_back({info, &oracle.curve(info.id)});
-  const double min_size =
-      criteria.min_size > 0 ? criteria.min_size : 1e-4 * oracle.bounding_box().diagonal();
-  return detail::ProtectionPlanner(std::move(curves), oracle.corners(), criteria, min_size,
+  return detail::ProtectionPlanner(std::move(curves), oracle.corners(), criteria, criteria.min_size,
                                    &oracle);
 }
 
@@ -66,12 +65,14 @@ void record_protection(const detail::ProtectionPlan& plan,
 
 }  // namespace
 
-MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& criteria,
+MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& given,
                          const MeshOptions& options) {
-  criteria.validate();
+  given.validate();
+  Criteria criteria = given;  // the minimum size resolved once, for every stage
+  criteria.min_size = given.min_size_for(oracle.bounding_box());
   if (!(options.time_limit_seconds >= 0) || !std::isfinite(options.time_limit_seconds)) {
     throw InputError("the time limit must be a number of seconds >= 0 (0: none), got " +
-                     std::to_string(options.time_limit_seconds));
+                     short_number(options.time_limit_seconds));
   }
   const auto run_start = std::chrono::steady_clock::now();
   const auto deadline =

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "domain_file_limits.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/expression.h"
 #include "rdmesh/implicit_oracle.h"
@@ -47,6 +48,7 @@ class Parser {
   explicit Parser(std::string origin) : origin_(std::move(origin)) {}
 
   LoadedDomain parse(const std::string& text) {
+    checked([&] { detail::check_json_depth(text); }, "");
     const Json doc = parse_json(text);
     if (!doc.is_object()) fail("the top level must be a JSON object");
     check_keys(doc, std::begin(kTopKeys), std::end(kTopKeys), "at the top level");
@@ -54,6 +56,7 @@ class Parser {
       fail("'description' must be a string");
     }
     const Box3 box = parse_bbox(doc);
+    diagonal_ = box.diagonal();
     parse_functions(doc);
     std::vector<ImplicitOracle::SubdomainSpec> subdomains = parse_subdomains(doc);
     std::vector<ImplicitOracle::CurveSpec> curves = parse_curves(doc);
@@ -66,12 +69,23 @@ class Parser {
     } catch (const InputError& e) {
       fail(e.what());
     }
+    checked([&] { detail::check_domain_inside_box(*result.oracle); }, "");
     return result;
   }
 
  private:
   [[noreturn]] void fail(const std::string& problem) const {
     throw InputError(origin_, one_line(problem));
+  }
+
+  /// Runs `check`; its InputError becomes fail(where + problem).
+  template <class Check>
+  void checked(Check&& check, const std::string& where) const {
+    try {
+      check();
+    } catch (const InputError& e) {
+      fail(where + e.what());
+    }
   }
 
   Json parse_json(const std::string& text) const {
@@ -116,7 +130,9 @@ class Parser {
              number_text(v[i]) + " >= " + axis[i] + "max " + number_text(v[i + 3]));
       }
     }
-    return {{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
+    const Box3 box{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
+    checked([&] { detail::check_box_size(box); }, "");
+    return box;
   }
 
   void parse_functions(const Json& doc) {
@@ -128,6 +144,8 @@ class Parser {
     for (const auto& item : fs.items()) {
       const std::string name = item.key();
       if (!item.value().is_string()) fail("function '" + name + "' must be an expression string");
+      checked([&] { detail::check_expression_length(item.value().get<std::string>(), "it"); },
+              "function '" + name + "': ");
       try {
         functions_.push_back(Expression(item.value().get<std::string>()));
       } catch (const InputError& e) {
@@ -174,6 +192,10 @@ class Parser {
     }
     const Json& subs = doc["subdomains"];
     if (!subs.is_array() || subs.empty()) fail("'subdomains' must be a non-empty list");
+    if (subs.size() > detail::kMaxSubdomains) {
+      fail("too many subdomains (" + std::to_string(subs.size()) + "), at most " +
+           std::to_string(detail::kMaxSubdomains));
+    }
     for (std::size_t i = 0; i < subs.size(); ++i) {
       const Json& s = subs[i];
       std::string label = "subdomain_" + std::to_string(i + 1);
@@ -196,6 +218,10 @@ class Parser {
     if (!doc.contains("curves")) return out;
     const Json& list = doc["curves"];
     if (!list.is_array()) fail("'curves' must be a list of curves");
+    if (list.size() > detail::kMaxCurves) {
+      fail("too many curves (" + std::to_string(list.size()) + "), at most " +
+           std::to_string(detail::kMaxCurves));
+    }
     for (std::size_t i = 0; i < list.size(); ++i) {
       const Json& c = list[i];
       if (!c.is_object()) fail("curve " + std::to_string(i + 1) + " must be an object");
@@ -212,6 +238,15 @@ class Parser {
       check_keys(c, std::begin(kCurveKeys), std::end(kCurveKeys), "in curve '" + name + "'");
       out.push_back(parse_curve(c, name));
     }
+    std::vector<std::pair<std::string, const Curve*>> named;
+    std::vector<std::pair<double, double>> ranges;
+    for (const auto& spec : out) {
+      checked([&] { detail::check_no_self_overlap(*spec.curve, spec.t_begin, spec.t_end, diagonal_); },
+              "curve '" + spec.name + "': ");
+      named.emplace_back(spec.name, spec.curve.get());
+      ranges.emplace_back(spec.t_begin, spec.t_end);
+    }
+    checked([&] { detail::check_distinct_curves(named, ranges, diagonal_); }, "");
     return out;
   }
 
@@ -229,6 +264,10 @@ class Parser {
         const Json& pts = c["points"];
         if (!pts.is_array() || pts.size() < 2) {
           fail(where + "'points' must be a list of at least two [x, y, z] points");
+        }
+        if (pts.size() > detail::kMaxPolylinePoints) {
+          fail(where + "too many points (" + std::to_string(pts.size()) + "), at most " +
+               std::to_string(detail::kMaxPolylinePoints));
         }
         std::vector<Point3> points;
         for (std::size_t k = 0; k < pts.size(); ++k) {
@@ -253,6 +292,8 @@ class Parser {
         if (!c.contains(key)) fail(where + "missing '" + key + "' (an expression of t)");
         if (!c[key].is_string()) fail(where + "'" + key + "' must be an expression string of t");
         xyz[k] = c[key].get<std::string>();
+        checked([&] { detail::check_expression_length(xyz[k], std::string("'") + key + "'"); },
+                where);
       }
       if (!c.contains("t")) fail(where + "missing 't': [t0, t1], the parameter range");
       const Json& t = c["t"];
@@ -262,12 +303,27 @@ class Parser {
         fail(where + "'t' must be [t0, t1] with finite numbers t0 < t1, got " + one_line(t.dump()));
       }
       const double t0 = t[0].get<double>(), t1 = t[1].get<double>();
+      check_parametric_length(xyz, t0, t1, where);
       try {
         return {name, std::make_shared<ParametricCurve>(xyz[0], xyz[1], xyz[2], t0, t1), t0, t1};
       } catch (const InputError& e) {
         fail(where + e.what());
       }
     }
+  }
+
+  /// A curve with a million turns is refused before its sample table is built
+  /// (syntax errors are left to ParametricCurve, which names the coordinate).
+  void check_parametric_length(const std::string (&xyz)[3], double t0, double t1,
+                               const std::string& where) const {
+    std::optional<Expression> e[3];
+    try {
+      for (int k = 0; k < 3; ++k) e[k].emplace(xyz[k], std::vector<std::string>{"t"});
+    } catch (const InputError&) {
+      return;
+    }
+    const auto gamma = [&e](double t) { return Point3{e[0]->at(t), e[1]->at(t), e[2]->at(t)}; };
+    checked([&] { detail::check_curve_length(gamma, t0, t1, diagonal_); }, where);
   }
 
   std::optional<double> positive_number(const Json& doc, const char* key, double max) const {
@@ -288,6 +344,8 @@ class Parser {
     if (v.is_number()) return ScalarField::uniform(*positive_number(doc, key, INFINITY));
     if (!v.is_string()) fail(std::string("'") + key + "' must be a number or an expression");
     std::optional<Expression> e;
+    checked([&] { detail::check_expression_length(v.get<std::string>(), "the expression"); },
+            std::string("'") + key + "': ");
     try {
       e.emplace(v.get<std::string>());
     } catch (const InputError& err) {
@@ -315,6 +373,7 @@ class Parser {
   }
 
   std::string origin_;
+  double diagonal_ = 0;  ///< of the bbox
   std::vector<ImplicitOracle::Function> functions_;
   std::vector<std::string> names_;
 };

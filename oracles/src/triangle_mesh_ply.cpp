@@ -119,6 +119,48 @@ class BodyReader {
   std::size_t next_ = 0;
 };
 
+/// Bytes left in `in` after its current position; -1 when the stream cannot tell.
+long long remaining_bytes(std::istream& in) {
+  const std::istream::pos_type here = in.tellg();
+  if (here == std::istream::pos_type(-1)) return -1;
+  in.seekg(0, std::ios::end);
+  const std::istream::pos_type end = in.tellg();
+  in.seekg(here);
+  if (end == std::istream::pos_type(-1) || !in) {
+    in.clear();
+    in.seekg(here);
+    return -1;
+  }
+  return static_cast<long long>(end - here);
+}
+
+/// Refuses, before anything is allocated, element counts the rest of the file cannot
+/// hold: an element takes at least its scalar sizes plus its lists' count sizes in a
+/// binary body, and at least 2 bytes (a digit and a separator) per property in an
+/// ASCII one (the last may lack its separator). An element without properties is refused unless its
+/// count is 0.
+void check_counts(const std::vector<Element>& elements, int format, long long remaining,
+                  const std::string& file) {
+  long double need = 0;
+  for (const Element& e : elements) {
+    if (e.count > 0 && e.properties.empty()) {
+      throw InputError(file, "PLY element '" + e.name + "' declares " + std::to_string(e.count) +
+                                 " items but no property");
+    }
+    long long bytes = 0;
+    for (const Property& p : e.properties) {
+      bytes += format == 0 ? 2 : size_of(p.is_list ? p.count_type : p.type);
+    }
+    need += static_cast<long double>(bytes) * e.count;
+    if (remaining >= 0 && need > remaining + (format == 0 ? 1 : 0)) {  // ASCII: no final newline
+      throw InputError(file, "PLY header declares " + std::to_string(e.count) + " '" + e.name +
+                                 "' items, but the file ends early: the " +
+                                 std::to_string(remaining) +
+                                 " bytes after the header cannot hold them");
+    }
+  }
+}
+
 }  // namespace
 
 TriangleSoup parse_ply(std::istream& in, const std::string& file) {
@@ -157,6 +199,7 @@ TriangleSoup parse_ply(std::istream& in, const std::string& file) {
     }
   }
   if (format < 0) throw InputError(file, "PLY header without 'format'");
+  check_counts(elements, format, remaining_bytes(r.stream()), file);
   TriangleSoup soup;
   BodyReader body(r, file, format);
   std::vector<long long> ids;

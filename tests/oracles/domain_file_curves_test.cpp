@@ -134,7 +134,7 @@ TEST(DomainFileCurves, Errors) {
   // A polyline on the sphere's equator would cut through the ball: off the boundary.
   expect_error("[{'points': [[1, 0, 0], [0, 1, 0]]}]",
                "curve 'curve_1' is not on the boundary of the domain");
-  expect_error("[{'name': 'inner', 'x': '0.5*cos(t)', 'y': '0.5*sin(t)', 'z': '0', 't': [0, 7]}]",
+  expect_error("[{'name': 'inner', 'x': '0.5*cos(t)', 'y': '0.5*sin(t)', 'z': '0', 't': [0, 6]}]",
                "curve 'inner' is not on the boundary of the domain");
   expect_error("[{'name': 'far', 'x': '3*cos(t)', 'y': '3*sin(t)', 'z': '0', 't': [0, 1]}]",
                "curve 'far': leaves the bounding box at t = 0");

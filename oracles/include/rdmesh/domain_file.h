@@ -24,7 +24,14 @@
 //   "size", "edge_size", "facet_size", "cell_size": positive number, or expression of x, y, z
 //       that must be positive and finite at the box center;
 //   "facet_distance", "radius_edge": positive finite numbers;
-//   "facet_angle": degrees, in (0, 60).
+//   "facet_angle": degrees, in (0, 60) here; criteria above 30 are refused (Criteria::validate).
+//
+// Limits (oracles/src/domain_file_limits.h): nesting at most 64 deep (checked on the
+// raw text), expressions at most 10000 characters, at most 64 subdomains, 1000 curves,
+// 100000 polyline points; bbox extents in [1e-6, 1e12] and at least 1e-6 of the largest
+// extent and of the coordinates' magnitude; no point of the box's faces inside the
+// domain; parametric curves at most 1000 box diagonals long and 100 turns; no
+// duplicate curves. (The CLI also samples size expressions over the whole box.)
 //
 // Every error is an InputError whose what() is one line "ORIGIN: problem".
 #pragma once
