@@ -6,12 +6,10 @@
 namespace rdmesh::cli {
 namespace {
 
+/// The volumes only: BRepGProp's face areas cost as much as the rest of the
+/// check on B-spline faces, and the mesh's own areas serve the tolerance.
 ModelMeasures cad_measures(const CadOracle& cad, bool surface_only) {
   ModelMeasures m;
-  for (const PatchInfo& p : cad.patches()) {
-    m.patch_area.resize(static_cast<std::size_t>(p.id.value), 0.0);
-    m.patch_area[static_cast<std::size_t>(p.id.value) - 1] = cad.exact_area(p.id);
-  }
   if (surface_only) return m;
   for (const SubdomainInfo& s : cad.subdomains()) {
     m.subdomain_volume.resize(static_cast<std::size_t>(s.id.value), 0.0);

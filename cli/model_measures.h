@@ -9,10 +9,10 @@
 
 namespace rdmesh::cli {
 
-/// Volumes per subdomain and areas per patch of a CadOracle (BRepGProp), the
-/// enclosed volume and the areas per patch of a TriangleMeshOracle; nullopt for
-/// other oracles (implicit domains: no exact measure to compare with). With
-/// `surface_only`, areas only.
+/// Volumes per subdomain of a CadOracle (BRepGProp; the mesh's patch areas
+/// serve the tolerance), the enclosed volume and the areas per patch of a
+/// TriangleMeshOracle; nullopt for other oracles (implicit domains: no exact
+/// measure to compare with). With `surface_only`, no volume.
 std::optional<ModelMeasures> model_measures(const DomainOracle& oracle, bool surface_only);
 
 }  // namespace rdmesh::cli

@@ -14,14 +14,21 @@ std::string format(const char* pattern, double a, double b, double c, double d) 
   return buffer;
 }
 
-/// Area of the patches that bound subdomain `id` (all patches for id 0).
-double bounding_area(SubdomainId id, const ModelMeasures& model,
+/// Area of the patches that bound subdomain `id` (all patches for id 0): the
+/// model's, or the mesh's where the model's is unknown.
+double bounding_area(SubdomainId id, const ModelMeasures& model, const QualityReport& quality,
                      const std::vector<PatchInfo>& patches) {
   double area = 0;
   for (const PatchInfo& p : patches) {
+    if (id != kOutside && p.side_a != id && p.side_b != id) continue;
     const std::size_t k = static_cast<std::size_t>(p.id.value) - 1;
-    if (k >= model.patch_area.size()) continue;
-    if (id == kOutside || p.side_a == id || p.side_b == id) area += model.patch_area[k];
+    if (k < model.patch_area.size()) {
+      area += model.patch_area[k];
+      continue;
+    }
+    for (const PatchStats& s : quality.patches) {
+      if (s.id == p.id) area += s.area;
+    }
   }
   return area;
 }
@@ -47,13 +54,13 @@ FidelityReport check_fidelity(const QualityReport& quality, const ModelMeasures&
       r.volumes.push_back(compare(s.id, s.name.empty() ? "subdomain " + std::to_string(s.id.value)
                                                        : s.name,
                                   s.volume, model.subdomain_volume[k],
-                                  bounding_area(s.id, model, patches), facet_distance));
+                                  bounding_area(s.id, model, quality, patches), facet_distance));
     }
   } else if (model.total_volume) {
     double mesh = 0;
     for (const SubdomainStats& s : quality.subdomains) mesh += s.volume;
     r.volumes.push_back(compare(kOutside, "the domain", mesh, *model.total_volume,
-                                bounding_area(kOutside, model, patches), facet_distance));
+                                bounding_area(kOutside, model, quality, patches), facet_distance));
   }
   for (const VolumeCheck& v : r.volumes) {
     if (v.passed) continue;

@@ -96,6 +96,10 @@ void measure_patches(const TetMesh& mesh, const std::vector<Label>& patches,
     triangles.reserve(groups[k].size());
     for (int f : groups[k]) triangles.push_back(mesh.triangles[f]);
     stats.triangles = triangles.size();
+    for (const auto& t : triangles) {
+      const Point3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
+      stats.area += 0.5 * norm(cross(b - a, c - a));
+    }
     stats.euler_characteristic = euler_characteristic(triangles);
     if (oracle != nullptr) measure_distance(mesh, triangles, *oracle, stats);
     r.projection_failures += stats.projection_failures;

@@ -68,6 +68,7 @@ nlohmann::json to_json(const QualityReport& r) {
     j["patches"].push_back({{"id", p.id.value},
                             {"name", p.name},
                             {"triangles", p.triangles},
+                            {"area", p.area},
                             {"euler_characteristic", p.euler_characteristic},
                             {"max_distance", number(p.max_distance)},
                             {"projection_failures", p.projection_failures}});

@@ -32,6 +32,18 @@ TEST(Fidelity, AMeshThatMatchesItsModelPasses) {
   EXPECT_TRUE(r.problems.empty());
 }
 
+TEST(Fidelity, WithoutTheModelsAreasTheMeshsOwnServe) {
+  const TetMesh mesh = testing::two_cube_mesh(0.1);
+  const QualityReport q = measure_quality(mesh, nullptr);
+  ModelMeasures model = two_cube_model(0.1, 1e-3);
+  model.patch_area.clear();
+  const FidelityReport r = check_fidelity(q, model, mesh.patches, mesh.curves, 1e-3);
+  ASSERT_EQ(r.volumes.size(), 2u);
+  // The left cube's skin (5 squares) and the interface: 0.06, as measured on the mesh.
+  EXPECT_NEAR(r.volumes[0].tolerance, 1e-3 * 0.06 + 1e-12, 1e-15);
+  EXPECT_TRUE(r.passed);
+}
+
 TEST(Fidelity, AVolumeBeyondTheToleranceFailsAndIsNamed) {
   const TetMesh mesh = testing::two_cube_mesh(0.1);
   const QualityReport q = measure_quality(mesh, nullptr);

@@ -9,7 +9,8 @@
 //     from the criteria: a boundary that stays within the facet distance d of
 //     the true surface encloses a volume within d x area of the surfaces
 //     around the subdomain, so the tolerance is d x (area of the subdomain's
-//     patches), plus 1e-9 of the volume for rounding. (A mesh whose boundary
+//     patches; the model's when known, else the mesh's), plus 1e-9 of the
+//     volume for rounding. (A mesh whose boundary
 //     follows its surfaces to d passes; one that lost a piece of the model, or
 //     whose labels leaked, does not.)
 // Subdomains whose model volume is unknown are checked as a whole when the
@@ -33,7 +34,9 @@ struct ModelMeasures {
   std::vector<double> subdomain_volume;
   /// Volume of the whole domain, when subdomain_volume is empty.
   std::optional<double> total_volume;
-  /// Area of each patch, index = id - 1 (the oracle's patch ids).
+  /// Area of each patch, index = id - 1 (the oracle's patch ids); empty: the
+  /// mesh's own patch areas serve (a lost piece of surface then only makes the
+  /// tolerance smaller).
   std::vector<double> patch_area;
 };
 

@@ -30,6 +30,7 @@ struct PatchStats {
   PatchId id;
   std::string name;              ///< from TetMesh::patches, empty if the id is not listed there
   std::size_t triangles = 0;     ///< triangles labelled `id`
+  double area = 0;               ///< their total area
   int euler_characteristic = 0;  ///< V - E + F of those triangles
   double max_distance = -1;      ///< max sampled distance to the patch; -1 = not measured
   std::size_t projection_failures = 0;  ///< samples whose projection failed (skipped)
