@@ -2,6 +2,7 @@
 //   rdmesh_cad_tool info FILE           JSON: solids, patches, curves, corners, bbox, exact
 //                                       volume (whole and per subdomain) and area
 //   rdmesh_cad_tool thickness FILE      the thickness behind each curved face
+//   rdmesh_cad_tool curves FILE         each curve's length, corners and ends
 //   rdmesh_cad_tool write SHAPE FILE    writes a test shape (box, cylinder, box_minus_cylinder,
 //                                       two_boxes, sphere) as STEP / BREP / IGES
 #include <cstdio>
@@ -10,6 +11,7 @@
 #include <string>
 
 #include "rdmesh/cad_oracle.h"
+#include "rdmesh/curve.h"
 #include "rdmesh/errors.h"
 
 int main(int argc, char** argv) {
@@ -36,6 +38,17 @@ int main(int argc, char** argv) {
       for (const PatchInfo& p : o->patches()) {
         const auto t = o->curved_thickness(p.id);
         if (t) std::printf("patch %d thickness %.6g\n", p.id.value, *t);
+      }
+      return 0;
+    }
+    if (cmd == "curves" && argc == 3) {
+      const auto o = load_cad_file(argv[2]);
+      for (const CurveInfo& c : o->curves()) {
+        const Curve& curve = o->curve(c.id);
+        const Point3 a = curve.point(c.t_begin), b = curve.point(c.t_end);
+        std::printf("curve %d length %.6g corners %d %d from (%g %g %g) to (%g %g %g)\n",
+                    c.id.value, curve.length(c.t_begin, c.t_end), c.start.value, c.end.value, a.x,
+                    a.y, a.z, b.x, b.y, b.z);
       }
       return 0;
     }

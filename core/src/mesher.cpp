@@ -54,6 +54,7 @@ void record_protection(const detail::ProtectionPlan& plan,
   stats.min_ball_radius = plan.min_radius;
   stats.protection_conflicts = plan.unresolved_pairs + conflicts.size();
   stats.protection_features = plan.unresolved;
+  for (int j : plan.unresolved_curves) stats.curves_below_min_size.push_back(CurveId(j + 1));
   for (const detail::BallRef& b : conflicts) {
     if (stats.protection_features.size() >= 20) break;
     stats.protection_features.push_back(

@@ -423,6 +423,9 @@ bool ProtectionPlanner::separate_balls(bool record) {
                 // Unresolved: at least neither ball may hold the other's centre.
                 for (const BallRef& r : {b.ref, o.ref}) clamp_radius(r, 0.95 * dist);
                 ++unresolved_pairs_;
+                for (const BallRef& r : {b.ref, o.ref}) {
+                  if (r.curve >= 0) unresolved_curve_[r.curve] = 1;
+                }
                 const std::string what = name(b.ref) + " near " + name(o.ref);
                 if (unresolved_.size() < 20 &&
                     std::find(unresolved_.begin(), unresolved_.end(), what) == unresolved_.end()) {
@@ -506,6 +509,7 @@ void ProtectionPlanner::resolve() {
   }
   unresolved_.clear();
   unresolved_pairs_ = 0;
+  unresolved_curve_.assign(curves_.size(), 0);
   separate_balls(true);
   keep_all_visible();
 }
@@ -536,6 +540,9 @@ ProtectionPlan ProtectionPlanner::result() const {
   plan.corner_radius = corner_radius_;
   plan.unresolved = unresolved_;
   plan.unresolved_pairs = unresolved_pairs_;
+  for (std::size_t j = 0; j < unresolved_curve_.size(); ++j) {
+    if (unresolved_curve_[j]) plan.unresolved_curves.push_back(static_cast<int>(j));
+  }
   plan.min_radius = std::numeric_limits<double>::infinity();
   plan.balls = corners_.size();
   for (double r : corner_radius_) plan.min_radius = std::min(plan.min_radius, r);

@@ -96,6 +96,10 @@ struct ProtectionPlan {
   /// a pair are cut so that neither holds the other's centre (hiding it).
   std::vector<std::string> unresolved;
   std::size_t unresolved_pairs = 0;
+  /// Curves (indices) with a ball in such a pair: closer to another feature
+  /// than the minimum size lets the mesh separate, so the mesh may not follow
+  /// them (ascending, each once).
+  std::vector<int> unresolved_curves;
   std::size_t balls = 0;
   double min_radius = 0;
 };
@@ -194,6 +198,7 @@ class ProtectionPlanner {
   std::vector<char> corner_moved_;  ///< radius changed since the last separate_balls()
   std::vector<std::string> unresolved_;
   std::size_t unresolved_pairs_ = 0;
+  std::vector<char> unresolved_curve_;  ///< per curve: a ball in an unresolved pair
 };
 
 }  // namespace rdmesh::detail

@@ -45,7 +45,8 @@ VolumeCheck compare(SubdomainId id, std::string name, double mesh, double exact,
 
 FidelityReport check_fidelity(const QualityReport& quality, const ModelMeasures& model,
                               const std::vector<PatchInfo>& patches,
-                              const std::vector<CurveInfo>& curves, double facet_distance) {
+                              const std::vector<CurveInfo>& curves, double facet_distance,
+                              const std::vector<CurveId>& below_min_size) {
   FidelityReport r;
   if (!model.subdomain_volume.empty()) {
     for (const SubdomainStats& s : quality.subdomains) {
@@ -83,8 +84,14 @@ FidelityReport check_fidelity(const QualityReport& quality, const ModelMeasures&
   for (const CurveStats& c : quality.curves) {
     if (c.is_chain) chained.insert(c.id.value);
   }
+  std::set<int> unresolved;
+  for (const CurveId& c : below_min_size) unresolved.insert(c.value);
   for (const CurveInfo& c : curves) {
     if (chained.count(c.id.value)) continue;
+    if (unresolved.count(c.id.value)) {
+      r.unresolved_curves.push_back(c.id);
+      continue;
+    }
     r.broken_curves.push_back(c.id);
     r.problems.push_back("curve " + std::to_string(c.id.value) + " (" + c.name +
                          ") is not one chain of edges");
@@ -109,6 +116,8 @@ nlohmann::json to_json(const FidelityReport& r) {
   for (const PatchId& p : r.missing_patches) j["missing_patches"].push_back(p.value);
   j["broken_curves"] = nlohmann::json::array();
   for (const CurveId& c : r.broken_curves) j["broken_curves"].push_back(c.value);
+  j["curves_below_min_size"] = nlohmann::json::array();
+  for (const CurveId& c : r.unresolved_curves) j["curves_below_min_size"].push_back(c.value);
   j["problems"] = r.problems;
   return j;
 }

@@ -84,6 +84,10 @@ struct RefinementStats {
   /// after the last restart; the features involved (at most 20).
   std::size_t protection_conflicts = 0;
   std::vector<std::string> protection_features;
+  /// Curves lying closer to another feature than the minimum size lets the
+  /// mesh separate (a ball of theirs in an unresolved pair): below what the
+  /// run can resolve, so the mesh may not follow them (ascending).
+  std::vector<CurveId> curves_below_min_size;
   /// Refinement stopped at MeshOptions::time_limit_seconds with elements
   /// still to refine (`elements_left`: edges, facets and cells in the queues,
   /// some of them no longer bad).

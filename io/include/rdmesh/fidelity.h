@@ -4,7 +4,10 @@
 // success. After meshing a CAD model or a triangle mesh, whose exact volumes
 // and areas are known, the mesh is compared with the model:
 //   - every patch of the model has triangles in the mesh;
-//   - every curve is one chain of feature edges (QualityReport's is_chain);
+//   - every curve is one chain of feature edges (QualityReport's is_chain),
+//     except curves closer to another feature than the run's minimum size (the
+//     protection could not separate them: RefinementStats::curves_below_min_size),
+//     which the run warned about; they are listed, not failed;
 //   - the volume of each subdomain is the model's within a tolerance derived
 //     from the criteria: a boundary that stays within the facet distance d of
 //     the true surface encloses a volume within d x area of the surfaces
@@ -55,6 +58,8 @@ struct FidelityReport {
   std::vector<VolumeCheck> volumes;
   std::vector<PatchId> missing_patches;  ///< patches of the model without triangles
   std::vector<CurveId> broken_curves;    ///< curves that are not one chain of edges
+  /// Curves below the minimum size that are not one chain: not a failure.
+  std::vector<CurveId> unresolved_curves;
   /// One short phrase per problem, e.g. "solid_1: volume 1.466e+06, model 5.215e+06
   /// (-71.9%, allowed +-3.1%)"; empty when passed.
   std::vector<std::string> problems;
@@ -62,10 +67,12 @@ struct FidelityReport {
 
 /// Compares the measured mesh (`quality`, from measure_quality; distances need
 /// not be measured) with `model`. `patches` and `curves` are the oracle's;
-/// `facet_distance` the criteria's.
+/// `facet_distance` the criteria's; `below_min_size` the curves the run could
+/// not separate from other features (RefinementStats::curves_below_min_size).
 FidelityReport check_fidelity(const QualityReport& quality, const ModelMeasures& model,
                               const std::vector<PatchInfo>& patches,
-                              const std::vector<CurveInfo>& curves, double facet_distance);
+                              const std::vector<CurveInfo>& curves, double facet_distance,
+                              const std::vector<CurveId>& below_min_size = {});
 
 /// The report as JSON: passed, volumes (id, name, mesh, model, tolerance,
 /// passed), missing_patches, broken_curves (ids) and problems.
