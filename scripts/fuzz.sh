@@ -57,6 +57,39 @@ for path in sys.argv[2:]:
 EOF
 }
 
+# Open findings another engineer is fixing right now, as "TARGET;;REGEX;;...":
+# an input whose replayed report matches every REGEX (grep -E) counts as
+# "known", not as a failure, so CI stays usable while they are fixed. Remove an
+# entry with its fix.
+known_open=(
+  # triangle_mesh_ply.cpp casts a list count (NaN, 1e30) to long long before
+  # checking it (tests/oracles/fuzz_regressions/open/ply/nan_list_length.ply).
+  "ply;;triangle_mesh_ply.cpp:[0-9:]+ runtime error: .* is outside the range of representable values"
+  # An element of 10^11 items without properties (as bad/junk.ply) loops that
+  # many times in the PLY reader.
+  "ply;;ALARM: working on the last Unit;;in rdmesh::parse_ply"
+)
+
+# True when target $1 has a known open finding.
+has_known_open() {
+  local entry
+  for entry in "${known_open[@]}"; do [ "${entry%%;;*}" = "$1" ] && return 0; done
+  return 1
+}
+
+# True when the report $2 of target $1 shows a known open finding.
+is_known_open() {
+  local entry rest regex matched regexes
+  for entry in "${known_open[@]}"; do
+    [ "${entry%%;;*}" = "$1" ] || continue
+    rest=${entry#*;;} matched=1
+    IFS=$'\x01' read -r -a regexes <<<"${rest//;;/$'\x01'}"
+    for regex in "${regexes[@]}"; do grep -qE "$regex" "$2" || matched=0; done
+    [ "$matched" -eq 1 ] && return 0
+  done
+  return 1
+}
+
 status=0
 rows=()
 for t in "${targets[@]}"; do
@@ -77,27 +110,46 @@ for t in "${targets[@]}"; do
   dict=()
   [ -f "fuzz/dicts/$t.dict" ] && dict=(-dict="fuzz/dicts/$t.dict")
   log=$dir/fuzz-$t.log
-  before=$(find "$findings" -type f ! -name 'slow-unit-*' | wc -l)
+  # A target with a known open finding fuzzes on past crashes, timeouts and
+  # out-of-memory inputs (-fork=1: still one fuzzing process at a time, in a child).
+  mode=()
+  has_known_open "$t" && mode=(-fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1)
+  touch "$log.start"
   echo "fuzz: $t for ${seconds}s" >&2
   rc=0
   "$dir/fuzz/rdmesh_fuzz_$t" -max_total_time="$seconds" -max_len="${max_len[$t]}" -timeout=10 \
-    -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$findings/" "${dict[@]}" \
-    "$corpus" "$seeds" >"$log" 2>&1 || rc=$?
-  found=$(($(find "$findings" -type f ! -name 'slow-unit-*' | wc -l) - before))
-  if [ "$rc" -ne 0 ] && [ "$found" -eq 0 ]; then found=1; fi
-  if [ "$found" -ne 0 ]; then
-    status=1
-    echo "fuzz: $t: finding, see $log and $findings/" >&2
-    grep -E '^(==[0-9]+==ERROR|SUMMARY|rdmesh fuzz:|.*runtime error)' "$log" | head -5 >&2 || true
+    -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$findings/" "${mode[@]}" \
+    "${dict[@]}" "$corpus" "$seeds" >"$log" 2>&1 || rc=$?
+  # Each new input is replayed: a finding unless its report is a known open one.
+  # (A shorter timeout: an input that took 10 s under fuzzing may take 9 alone.)
+  found=0 known=0
+  while IFS= read -r input; do
+    "$dir/fuzz/rdmesh_fuzz_$t" -timeout=5 -rss_limit_mb=2048 "$input" >"$input.log" 2>&1 || true
+    if is_known_open "$t" "$input.log"; then
+      known=$((known + 1))
+    else
+      found=$((found + 1))
+      echo "fuzz: $t: finding $input" >&2
+      grep -E '^(==[0-9]+==ERROR|SUMMARY|rdmesh fuzz:|.*runtime error)' "$input.log" | head -5 >&2 || true
+    fi
+  done < <(find "$findings" -type f -newer "$log.start" ! -name '*.log' ! -name 'slow-unit-*')
+  if [ "$rc" -ne 0 ] && [ $((found + known)) -eq 0 ]; then
+    found=1
+    echo "fuzz: $t: libFuzzer failed (exit $rc), see $log" >&2
   fi
+  [ "$found" -eq 0 ] || status=1
   runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log")
   speed=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log")
-  rows+=("$t ${runs:-?} ${speed:-?} $(find "$corpus" -type f | wc -l) $found")
+  if [ -z "$runs" ]; then  # fork mode: the parent's last status line
+    runs=$(grep -oE '^#[0-9]+: cov' "$log" | tail -1 | tr -dc 0-9) || true
+    speed=$(grep -oE 'exec/s:? [0-9]+' "$log" | tail -1 | tr -dc 0-9) || true
+  fi
+  rows+=("$t ${runs:-?} ${speed:-?} $(find "$corpus" -type f | wc -l) $found $known")
 done
 
-printf '%-12s %12s %8s %8s %9s\n' target executions exec/s corpus findings
+printf '%-12s %12s %8s %8s %9s %6s\n' target executions exec/s corpus findings known
 for r in "${rows[@]}"; do
-  # shellcheck disable=SC2086  # a row is five words
-  printf '%-12s %12s %8s %8s %9s\n' $r
+  # shellcheck disable=SC2086  # a row is six words
+  printf '%-12s %12s %8s %8s %9s %6s\n' $r
 done
 exit "$status"
