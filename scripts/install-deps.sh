@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages rdmesh needs to build, test and benchmark.
 # Runs apt-get only for what is missing; uses sudo when not root.
+# --fuzz: also what scripts/fuzz.sh needs.
 set -euo pipefail
 packages=(
   build-essential cmake ccache pkg-config git
@@ -13,6 +14,11 @@ packages=(
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
   libocct-data-exchange-dev libocct-ocaf-dev libocct-visualization-dev libtbb-dev
 )
+if [ "${1:-}" = "--fuzz" ]; then
+  # Fuzzing only (scripts/fuzz.sh): clang 14 and its compiler runtime, which
+  # ships libFuzzer (libclang_rt.fuzzer-x86_64.a) and the sanitizer runtimes.
+  packages+=(clang libclang-rt-14-dev)
+fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -141,7 +141,7 @@ TriangleSoup parse_off(std::istream& in, const std::string& file) {
     if (!r.next(tok)) throw InputError(file, "file ends after " + std::to_string(i) + " of " +
                                                  std::to_string(nf) + " faces");
     const long long k = r.integer(tok[0]);
-    if (k < 0 || static_cast<long long>(tok.size()) < k + 1) {
+    if (k < 0 || k > static_cast<long long>(tok.size()) - 1) {  // k + 1 overflows for huge k
       r.fail("face with " + std::to_string(tok.size() - 1) + " indices, expected " +
              std::to_string(k));
     }
