@@ -1,8 +1,9 @@
 // The libFuzzer entry point of the CAD reader (rdmesh::load_cad_file), which
 // only reads paths: the bytes go to a temporary file whose extension is
-// RDMESH_FUZZ_CAD_EXTENSION (".step" or ".brep"). OpenCASCADE reads in this
-// process, so its crashes are findings here; scripts/fuzz.sh runs these targets
-// only when named, not in CI, until the CAD reading runs in an isolated child.
+// RDMESH_FUZZ_CAD_EXTENSION (".step" or ".brep"). The file is read as the CLI
+// reads it, in an isolated child (CadOptions::isolate): a crash or hang of
+// OpenCASCADE must come back as an InputError; anything else is a finding.
+// scripts/fuzz.sh runs these targets only when named (a fork per input).
 #include <unistd.h>
 
 #include <cstddef>

@@ -6,6 +6,7 @@
 // property is read and discarded, so files with normals, colours or extra
 // elements load.
 #include <algorithm>
+#include <cmath>
 #include <bit>
 #include <cstdint>
 #include <cstring>
@@ -211,13 +212,17 @@ TriangleSoup parse_ply(std::istream& in, const std::string& file) {
       for (const Property& prop : e.properties) {
         if (prop.is_list) {
           const double n = body.value(prop.count_type);
-          if (n < 0 || n != static_cast<long long>(n)) {
+          // Checked before any cast: NaN or 1e30 as a long long is undefined.
+          if (!(n >= 0 && n <= 1e15) || n != std::floor(n)) {
             throw InputError(file, "bad list length in element '" + e.name + "'");
           }
           const bool keep =
               is_face && (prop.name == "vertex_indices" || prop.name == "vertex_index");
           for (long long k = 0; k < static_cast<long long>(n); ++k) {
             const double v = body.value(prop.type);
+            if (keep && !(std::fabs(v) < 1e18)) {
+              throw InputError(file, "bad vertex index in element '" + e.name + "'");
+            }
             if (keep) ids.push_back(static_cast<long long>(v));
           }
         } else {

@@ -2,13 +2,11 @@
 // fuzz_regressions/TARGET/ goes through the same reader as the fuzz target
 // TARGET (fuzz/fuzz_inputs.h) and must either load or throw InputError.
 //
-// fuzz_regressions/open/TARGET/ holds findings not fixed yet, in files another
-// engineer owns; they are not run here (under the sanitizers they abort the
-// whole test program). Move a file into TARGET/ with its fix:
-//   open/ply/nan_list_length.ply: a binary PLY list whose count type is float
-//     and whose count is NaN; triangle_mesh_ply.cpp casts it to long long
-//     before checking that it is an integer (UBSan: "-nan is outside the range
-//     of representable values of type 'long long'"; 1e30 does the same).
+// fuzz_regressions/open/TARGET/ is for findings not fixed yet (not run here:
+// under the sanitizers they abort the whole test program); move a file into
+// TARGET/ with its fix. ply/nan_list_length.ply came from there: a binary PLY
+// list whose count type is float and whose count is NaN, which the reader
+// cast to long long before checking it (UBSan; 1e30 did the same).
 #include <gtest/gtest.h>
 
 #include <algorithm>
