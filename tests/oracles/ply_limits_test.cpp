@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <sstream>
 #include <string>
 
@@ -66,6 +67,29 @@ TEST(PlyLimits, FaceCountBeyondTheFileSizeIsRefused) {
   std::string text = kTriangle;
   text.replace(text.find("element face 1"), 14, "element face 4000000000");
   EXPECT_NE(ply_error(text).find("4000000000 'face' items"), std::string::npos);
+}
+
+TEST(PlyLimits, NonFiniteOrHugeListCountsAndIndicesAreRefusedBeforeAnyCast) {
+  // A binary face list whose count is a float: NaN or 1e30 was cast to long
+  // long before the check (undefined behaviour, found by fuzzing); an index of
+  // 1e30 likewise. The body is long enough for the header's counts.
+  auto binary = [](float count, float index) {
+    std::string text =
+        "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+        "property float y\nproperty float z\nelement face 1\n"
+        "property list float float vertex_indices\nend_header\n";
+    const float values[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, count, 0, 1, index};
+    text.append(reinterpret_cast<const char*>(values), sizeof values);
+    text.append(64, '\0');
+    return text;
+  };
+  EXPECT_EQ(ply_error(binary(3, 2)), "");
+  for (const float count : {std::nanf(""), 1e30f, -1.0f, 2.5f}) {
+    const std::string e = ply_error(binary(count, 2));
+    EXPECT_NE(e.find("bad list length"), std::string::npos) << count << ": " << e;
+  }
+  const std::string e = ply_error(binary(3, 1e30f));
+  EXPECT_NE(e.find("bad vertex index"), std::string::npos) << e;
 }
 
 }  // namespace
