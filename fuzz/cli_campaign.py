@@ -138,14 +138,21 @@ def main():
             with open(name, "wb") as f:
                 f.write(data)
             print("finding: %s: %s" % (name, problem), file=sys.stderr, flush=True)
+        if (k + 1) % 500 == 0:
+            print_table(table, sys.stderr)
     shutil.rmtree(base)
+    print_table(table, sys.stdout)
+    return 1 if findings else 0
+
+
+def print_table(table, out):
     columns = ["runs", "exit 0", "exit 2", "exit 4", "exit 3", "hang", "findings"]
-    print("| input | " + " | ".join(columns) + " | other |")
-    print("|---" * (len(columns) + 2) + "|")
+    print("| input | " + " | ".join(columns) + " | other |", file=out)
+    print("|---" * (len(columns) + 2) + "|", file=out)
     for ext, c in sorted(table.items()):
         other = sum(v for key, v in c.items() if key not in columns)  # signals, exit 1
-        print("| %s | %s | %d |" % (ext, " | ".join(str(c[col]) for col in columns), other))
-    return 1 if findings else 0
+        print("| %s | %s | %d |" % (ext, " | ".join(str(c[col]) for col in columns), other),
+              file=out, flush=True)
 
 
 if __name__ == "__main__":
