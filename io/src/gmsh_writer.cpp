@@ -14,9 +14,11 @@
 #include <ostream>
 #include <string>
 
+#include "element_nodes.h"
 #include "mesh_labels.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/mesh_writers.h"
+#include "rdmesh/second_order.h"
 
 namespace rdmesh {
 namespace {
@@ -272,9 +274,16 @@ void write_gmsh41(const TetMesh& mesh, std::ostream& out) {
       << '\n';
   long long next_tag = 1;
   // Tets and triangles first: a mesh without features keeps its element tags.
-  write_element_blocks(out, 3, 4, mesh.tets, levels[3], next_tag);
-  write_element_blocks(out, 2, 2, mesh.triangles, levels[2], next_tag);
-  write_element_blocks(out, 1, 1, mesh.edges, levels[1], next_tag);
+  if (is_second_order(mesh)) {  // 10-node tets, 6-node triangles, 3-node lines
+    write_element_blocks(out, 3, 11, io_detail::tet10_elements(mesh, io_detail::Tet10Order::kGmsh),
+                         levels[3], next_tag);
+    write_element_blocks(out, 2, 9, io_detail::triangle6_elements(mesh), levels[2], next_tag);
+    write_element_blocks(out, 1, 8, io_detail::line3_elements(mesh), levels[1], next_tag);
+  } else {
+    write_element_blocks(out, 3, 4, mesh.tets, levels[3], next_tag);
+    write_element_blocks(out, 2, 2, mesh.triangles, levels[2], next_tag);
+    write_element_blocks(out, 1, 1, mesh.edges, levels[1], next_tag);
+  }
   write_element_blocks(out, 0, 15, corner_elements, levels[0], next_tag);
   out << "$EndElements\n";
   if (!out) throw OutputError("write_gmsh41: the output stream failed");

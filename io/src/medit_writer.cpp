@@ -7,9 +7,11 @@
 #include <string>
 #include <vector>
 
+#include "element_nodes.h"
 #include "mesh_labels.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/mesh_writers.h"
+#include "rdmesh/second_order.h"
 
 namespace rdmesh {
 namespace {
@@ -38,6 +40,19 @@ void write_section(std::ostream& out, const char* keyword,
   }
 }
 
+/// TetrahedraP2, TrianglesP2 and EdgesP2: the vertices, then the mid nodes
+/// in P.L. George's order (tetrahedra: edges 01, 12, 20, 03, 13, 23).
+void write_p2_sections(std::ostream& out, const TetMesh& mesh) {
+  write_section(out, "TetrahedraP2", io_detail::tet10_elements(mesh, io_detail::Tet10Order::kVtk),
+                mesh.tet_subdomain);
+  out << '\n';
+  write_section(out, "TrianglesP2", io_detail::triangle6_elements(mesh), mesh.triangle_patch);
+  if (!mesh.edges.empty()) {
+    out << '\n';
+    write_section(out, "EdgesP2", io_detail::line3_elements(mesh), mesh.edge_curve);
+  }
+}
+
 }  // namespace
 
 void write_medit(const TetMesh& mesh, std::ostream& out) {
@@ -62,12 +77,16 @@ void write_medit(const TetMesh& mesh, std::ostream& out) {
     out << line;
   }
   out << '\n';
-  write_section(out, "Tetrahedra", mesh.tets, mesh.tet_subdomain);
-  out << '\n';
-  write_section(out, "Triangles", mesh.triangles, mesh.triangle_patch);
-  if (!mesh.edges.empty()) {
+  if (is_second_order(mesh)) {
+    write_p2_sections(out, mesh);
+  } else {
+    write_section(out, "Tetrahedra", mesh.tets, mesh.tet_subdomain);
     out << '\n';
-    write_section(out, "Edges", mesh.edges, mesh.edge_curve);
+    write_section(out, "Triangles", mesh.triangles, mesh.triangle_patch);
+    if (!mesh.edges.empty()) {
+      out << '\n';
+      write_section(out, "Edges", mesh.edges, mesh.edge_curve);
+    }
   }
   if (!mesh.corner_vertices.empty()) {
     line = "\nCorners\n";

@@ -68,6 +68,26 @@ void check_features(const TetMesh& mesh) {
   }
 }
 
+/// Second order: none of the mid-node arrays, or all of them, one entry per element.
+void check_mid_nodes(const TetMesh& mesh) {
+  const bool any = !mesh.tet_mid_nodes.empty() || !mesh.triangle_mid_nodes.empty() ||
+                   !mesh.edge_mid_nodes.empty();
+  if (!any) return;
+  if (mesh.tet_mid_nodes.size() != mesh.tets.size() ||
+      mesh.triangle_mid_nodes.size() != mesh.triangles.size() ||
+      mesh.edge_mid_nodes.size() != mesh.edges.size()) {
+    throw InternalError("TetMesh: the mid-node arrays do not match the elements (" +
+                        std::to_string(mesh.tet_mid_nodes.size()) + " tets, " +
+                        std::to_string(mesh.triangle_mid_nodes.size()) + " triangles, " +
+                        std::to_string(mesh.edge_mid_nodes.size()) + " edges)");
+  }
+  check_indices(mesh.tet_mid_nodes, mesh.vertices.size(), "tet mid nodes of");
+  check_indices(mesh.triangle_mid_nodes, mesh.vertices.size(), "triangle mid nodes of");
+  std::vector<std::array<int, 1>> edge_nodes;
+  for (int v : mesh.edge_mid_nodes) edge_nodes.push_back({v});
+  check_indices(edge_nodes, mesh.vertices.size(), "feature edge mid node of");
+}
+
 std::vector<Label> merge_labels(std::map<int, std::string> named, const std::vector<int>& used) {
   for (int id : used) named.try_emplace(id);
   std::vector<Label> labels;
@@ -110,6 +130,7 @@ void check_mesh(const TetMesh& mesh) {
   check_indices(mesh.tets, mesh.vertices.size(), "tet");
   check_indices(mesh.triangles, mesh.vertices.size(), "triangle");
   check_features(mesh);
+  check_mid_nodes(mesh);
 }
 
 bool has_features(const TetMesh& mesh) {

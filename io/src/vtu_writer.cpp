@@ -12,9 +12,11 @@
 #include <utility>
 #include <vector>
 
+#include "element_nodes.h"
 #include "mesh_labels.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/mesh_writers.h"
+#include "rdmesh/second_order.h"
 
 namespace rdmesh {
 namespace {
@@ -26,6 +28,9 @@ constexpr int kVtkTetra = 10;
 constexpr int kVtkTriangle = 5;
 constexpr int kVtkLine = 3;
 constexpr int kVtkVertex = 1;
+constexpr int kVtkQuadraticEdge = 21;
+constexpr int kVtkQuadraticTriangle = 22;
+constexpr int kVtkQuadraticTetra = 24;
 
 /// Streams integers, `per_line` to a line, the last one followed by a newline.
 /// Buffers in a fixed array (flushed by the destructor at the latest).
@@ -98,21 +103,32 @@ std::size_t num_cells(const TetMesh& mesh) {
   return mesh.tets.size() + mesh.triangles.size() + mesh.edges.size() + mesh.corner_vertices.size();
 }
 
+/// Appends the node lists of `elements` to `w`.
+template <std::size_t N>
+void add_nodes(IntWriter& w, const std::vector<std::array<int, N>>& elements) {
+  for (const auto& e : elements) {
+    for (int v : e) w.add(v);
+  }
+}
+
 void write_cells(std::ostream& out, const TetMesh& mesh) {
   const std::size_t nt = mesh.tets.size(), nf = mesh.triangles.size(), ne = mesh.edges.size(),
                     nc = mesh.corner_vertices.size();
+  const bool p2 = is_second_order(mesh);
+  // Nodes per tetrahedron, triangle, line: 10, 6, 3 for quadratic cells.
+  const std::size_t st = p2 ? 10 : 4, sf = p2 ? 6 : 3, se = p2 ? 3 : 2;
   out << "      <Cells>\n";
   open_array(out, "Int64", "connectivity");
   {
-    IntWriter w(out, 4 * nt + 3 * nf + 2 * ne + nc, 12);
-    for (const auto& t : mesh.tets) {
-      for (int v : t) w.add(v);
-    }
-    for (const auto& f : mesh.triangles) {
-      for (int v : f) w.add(v);
-    }
-    for (const auto& e : mesh.edges) {
-      for (int v : e) w.add(v);
+    IntWriter w(out, st * nt + sf * nf + se * ne + nc, 12);
+    if (p2) {
+      add_nodes(w, io_detail::tet10_elements(mesh, io_detail::Tet10Order::kVtk));
+      add_nodes(w, io_detail::triangle6_elements(mesh));
+      add_nodes(w, io_detail::line3_elements(mesh));
+    } else {
+      add_nodes(w, mesh.tets);
+      add_nodes(w, mesh.triangles);
+      add_nodes(w, mesh.edges);
     }
     for (int v : mesh.corner_vertices) w.add(v);
   }
@@ -121,17 +137,17 @@ void write_cells(std::ostream& out, const TetMesh& mesh) {
   {
     IntWriter w(out, num_cells(mesh), 12);
     long long offset = 0;
-    for (auto [count, size] : {std::pair{nt, 4}, {nf, 3}, {ne, 2}, {nc, 1}}) {
-      for (std::size_t i = 0; i < count; ++i) w.add(offset += size);
+    for (auto [count, size] : {std::pair{nt, st}, {nf, sf}, {ne, se}, {nc, std::size_t{1}}}) {
+      for (std::size_t i = 0; i < count; ++i) w.add(offset += static_cast<long long>(size));
     }
   }
   close_array(out);
   open_array(out, "UInt8", "types");
   {
     IntWriter w(out, num_cells(mesh), 24);
-    w.repeat(kVtkTetra, nt);
-    w.repeat(kVtkTriangle, nf);
-    w.repeat(kVtkLine, ne);
+    w.repeat(p2 ? kVtkQuadraticTetra : kVtkTetra, nt);
+    w.repeat(p2 ? kVtkQuadraticTriangle : kVtkTriangle, nf);
+    w.repeat(p2 ? kVtkQuadraticEdge : kVtkLine, ne);
     w.repeat(kVtkVertex, nc);
   }
   close_array(out);

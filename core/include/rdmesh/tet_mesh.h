@@ -10,8 +10,14 @@
 
 namespace rdmesh {
 
+/// The vertex pairs of a tetrahedron's edges in the order of TetMesh::tet_mid_nodes.
+inline constexpr std::array<std::array<int, 2>, 6> kTetEdges{
+    {{0, 1}, {1, 2}, {2, 0}, {3, 0}, {3, 2}, {3, 1}}};
+/// The vertex pairs of a triangle's edges in the order of TetMesh::triangle_mid_nodes.
+inline constexpr std::array<std::array<int, 2>, 3> kTriangleEdges{{{0, 1}, {1, 2}, {2, 0}}};
+
 struct TetMesh {
-  /// Vertex coordinates; every vertex is used by at least one tetrahedron.
+  /// Vertex coordinates; every vertex is used by at least one element.
   std::vector<Point3> vertices;
 
   /// Tetrahedra (0-based vertex indices), positively oriented:
@@ -36,6 +42,16 @@ struct TetMesh {
   /// Mesh vertices that are corners of the input (Q), and the corner each one is.
   std::vector<int> corner_vertices;
   std::vector<CornerId> corner_ids;
+
+  /// Second-order nodes (rdmesh/second_order.h); all three empty for a
+  /// first-order mesh. The mid-edge nodes are vertices too, numbered after the
+  /// first-order ones. tet_mid_nodes[t][k] is the node on edge kTetEdges[k] of
+  /// tets[t] (Gmsh's order: 01, 12, 20, 30, 32, 31); triangle_mid_nodes[f] the
+  /// nodes on edges 01, 12, 20 of triangles[f]; edge_mid_nodes[e] the node of
+  /// edges[e].
+  std::vector<std::array<int, 6>> tet_mid_nodes;
+  std::vector<std::array<int, 3>> triangle_mid_nodes;
+  std::vector<int> edge_mid_nodes;
 
   /// Names and ids of the domain's features (copied from the oracle).
   std::vector<SubdomainInfo> subdomains;

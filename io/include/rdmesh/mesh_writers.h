@@ -7,6 +7,9 @@
 //   - each boundary/interface triangle exactly once, with its patch id,
 //   - each feature edge with its curve id, each corner vertex with its corner id,
 //   - the subdomain, patch and curve names where the format can carry them (Gmsh).
+// A second-order mesh (rdmesh/second_order.h) is written with quadratic
+// elements instead: Gmsh types 11, 9, 8; VTK types 24, 22, 21; Medit
+// TetrahedraP2, TrianglesP2, EdgesP2 (node orders in io/src/element_nodes.h).
 // Output is deterministic: the same TetMesh gives byte-identical files. A mesh
 // without features (no edges, corner vertices, curves or corners) gives the
 // same files as before the 1D/0D levels existed.
