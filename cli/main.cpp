@@ -67,7 +67,9 @@ int run(const rdmesh::cli::Options& opt) {
   const bool bad = result.stats.time_limit_reached || (fidelity && !fidelity->passed);
 
   t = std::chrono::steady_clock::now();
+  cli::FemResults fem;
   if (!bad || opt.keep_bad_mesh) {
+    fem = cli::apply_fem_options(opt.fem, result.mesh, *input.oracle);
     write_mesh(result.mesh, opt.output);
     if (!opt.picture.path.empty()) cli::write_picture(result.mesh, opt.picture, opt.input);
   }
@@ -76,12 +78,13 @@ int run(const rdmesh::cli::Options& opt) {
 
   const cli::RunTimes times{seconds_load, seconds_write, seconds_report};
   if (!opt.report.empty()) {
-    cli::write_json_report(opt, criteria, result.stats, result.exudation, quality, fidelity,
-                           times);
+    cli::write_json_report(opt, criteria, result.stats, result.exudation, quality, fidelity, times,
+                           fem);
   }
   if (!opt.quiet) {
-    std::cout << format_summary(quality) << cli::format_run_summary(opt, result.stats, result.exudation, times,
-                                                                   !bad || opt.keep_bad_mesh);
+    std::cout << format_summary(quality) << cli::format_fem_summary(fem)
+              << cli::format_run_summary(opt, result.stats, result.exudation, times,
+                                         !bad || opt.keep_bad_mesh);
   }
   for (const PatchId& patch : result.stats.missing_patches) {
     std::fprintf(stderr, "rdmesh: warning: patch %d has no triangle in the mesh (too small for "
@@ -128,6 +131,7 @@ int main(int argc, char** argv) {
   CLI::App app{"rdmesh: tetrahedral meshes of domains bounded by piecewise smooth surfaces"};
   rdmesh::cli::Options opt;
   rdmesh::cli::add_options(app, opt);
+  rdmesh::cli::add_fem_options(app, opt.fem);
   try {
     app.parse(argc, argv);
     if (opt.output.empty()) opt.output = rdmesh::cli::default_output_path(opt.input);

@@ -268,8 +268,10 @@ nlohmann::json field_json(const ScalarField& f) {
 
 void write_json_report(const Options& opt, const Criteria& criteria, const RefinementStats& stats,
                        const ExudationStats& exudation, const QualityReport& quality,
-                       const std::optional<FidelityReport>& fidelity, const RunTimes& times) {
+                       const std::optional<FidelityReport>& fidelity, const RunTimes& times,
+                       const FemResults& fem) {
   nlohmann::json j = to_json(quality);
+  j.update(fem_json(fem));
   j["input"] = opt.input;
   j["output"] = opt.output;
   j["criteria"] = {{"edge_size", field_json(criteria.edge_size)},

@@ -15,6 +15,7 @@
 #include "rdmesh/mesher.h"
 #include "rdmesh/oracle.h"
 #include "rdmesh/quality_report.h"
+#include "fem_options.h"
 #include "picture_args.h"
 
 namespace rdmesh::cli {
@@ -37,6 +38,7 @@ struct Options {
   double time_limit = 0;      ///< --time-limit SECONDS: stop refinement, 0 = none
   bool keep_bad_mesh = false; ///< --keep-bad-mesh: write a mesh that failed the fidelity check
   bool full_check = false;    ///< --check full (or --report): measure every distance
+  FemOptions fem;             ///< --order (fem_options.h)
 };
 
 void add_options(CLI::App& app, Options& opt);
@@ -78,7 +80,8 @@ struct RunTimes {
 
 void write_json_report(const Options& opt, const Criteria& criteria, const RefinementStats& stats,
                        const ExudationStats& exudation, const QualityReport& quality,
-                       const std::optional<FidelityReport>& fidelity, const RunTimes& times);
+                       const std::optional<FidelityReport>& fidelity, const RunTimes& times,
+                       const FemResults& fem = {});
 
 /// `wrote_mesh`: false when the fidelity check (or the time limit) kept the mesh from being written.
 std::string format_run_summary(const Options& opt, const RefinementStats& stats,

@@ -1,0 +1,76 @@
+// FEM options on the command line: --order 2 writes quadratic elements in
+// every format, reports them, gives the same bytes twice; bad values are
+// input errors.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "cli_runner.h"
+
+namespace rdmesh::test {
+namespace {
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST(CliFem, OrderTwoWritesQuadraticElementsAndReportsThem) {
+  ScratchDir dir;
+  const std::string sample = "'" + source_path("samples/capped_cylinder.json") + "'";
+  const CliRun run = run_cli(sample + " -o p2.msh --order 2 --report r.json", dir.path());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_NE(run.output.find("second order: "), std::string::npos) << run.output;
+  const nlohmann::json r = nlohmann::json::parse(read_file(dir.file("r.json")));
+  const auto& s = r.at("second_order");
+  EXPECT_GT(s.at("curve_nodes").get<int>(), 0);    // the rims
+  EXPECT_GT(s.at("surface_nodes").get<int>(), 0);  // side and caps
+  EXPECT_EQ(s.at("placement_failures").get<int>(), 0);
+  EXPECT_GT(s.at("min_scaled_jacobian").get<double>(), 0.05);
+  const std::string msh = read_file(dir.file("p2.msh"));
+  // Element blocks "dim tag type count": 10-node tets, 6-node triangles, 3-node lines.
+  EXPECT_NE(msh.find("\n3 1 11 " + std::to_string(r.at("tets").get<int>()) + "\n"),
+            std::string::npos);
+  EXPECT_NE(msh.find("\n2 1 9 "), std::string::npos);
+  EXPECT_NE(msh.find("\n1 1 8 "), std::string::npos);
+
+  for (const char* name : {"p2.vtu", "p2.mesh"}) {
+    const CliRun again = run_cli(sample + " -q --order 2 -o " + name, dir.path());
+    ASSERT_EQ(again.exit_code, 0) << again.output;
+  }
+  EXPECT_NE(read_file(dir.file("p2.vtu")).find("24 24 24"), std::string::npos);
+  EXPECT_NE(read_file(dir.file("p2.mesh")).find("\nTetrahedraP2\n"), std::string::npos);
+  const CliRun same = run_cli(sample + " -q --order 2 -o same.msh", dir.path());
+  ASSERT_EQ(same.exit_code, 0) << same.output;
+  EXPECT_EQ(read_file(dir.file("same.msh")), msh);
+}
+
+TEST(CliFem, FirstOrderReportsNoSecondOrder) {
+  ScratchDir dir;
+  const std::string sample = "'" + source_path("samples/sphere.json") + "'";
+  const CliRun run = run_cli(sample + " -q --size 0.4 -o p1.msh --report r.json", dir.path());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_TRUE(nlohmann::json::parse(read_file(dir.file("r.json"))).at("second_order").is_null());
+  const std::string msh = read_file(dir.file("p1.msh"));
+  EXPECT_NE(msh.find("\n3 1 4 "), std::string::npos);
+  EXPECT_EQ(msh.find("\n3 1 11 "), std::string::npos);
+}
+
+TEST(CliFem, BadOrderIsAnInputError) {
+  ScratchDir dir;
+  const std::string sample = "'" + source_path("samples/sphere.json") + "'";
+  for (const char* bad : {"3", "0", "x"}) {
+    const CliRun run = run_cli(sample + " --order " + bad + " -o out.msh", dir.path());
+    EXPECT_EQ(run.exit_code, 2) << run.output;
+    EXPECT_EQ(run.output.rfind("rdmesh: error: ", 0), 0u) << run.output;
+    EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << run.output;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("out.msh")));
+  }
+}
+
+}  // namespace
+}  // namespace rdmesh::test
