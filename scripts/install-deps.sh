@@ -9,6 +9,7 @@ packages=(
   libmuparser-dev nlohmann-json3-dev libcli11-dev libgtest-dev
   libpng-dev zlib1g-dev  # view/: PNG pictures, zlib-compressed .vtu input
   python3-meshio gmsh   # independent readers used by the round-trip tests
+  libmetis-dev          # --partitions: METIS on the tetrahedra's dual graph
   # OpenCASCADE for cad/ (STEP/IGES need data-exchange, whose CMake config also
   # wants the ocaf and visualization dev packages; TKernel links TBB).
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <map>
 #include <ostream>
 #include <string>
 
@@ -247,21 +248,9 @@ std::size_t count_non_empty(const std::vector<std::vector<int>>& groups) {
       std::count_if(groups.begin(), groups.end(), [](const auto& g) { return !g.empty(); }));
 }
 
-}  // namespace
-
-void write_gmsh41(const TetMesh& mesh, std::ostream& out) {
-  io_detail::check_mesh(mesh);
-  const Levels levels{
-      make_level(io_detail::corner_labels(mesh), io_detail::corner_label_values(mesh)),
-      make_level(io_detail::curve_labels(mesh), io_detail::edge_label_values(mesh)),
-      make_level(io_detail::patch_labels(mesh), io_detail::triangle_label_values(mesh)),
-      make_level(io_detail::subdomain_labels(mesh), io_detail::tet_label_values(mesh))};
-
-  out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
-  write_physical_names(out, levels);
-  write_entities(out, mesh, levels);
-  write_nodes(out, mesh, levels);
-
+/// $Elements: one block per non-empty group of `levels` (model entities, or
+/// partitioned entities with their tags as labels).
+void write_elements(std::ostream& out, const TetMesh& mesh, const Levels& levels) {
   std::vector<std::array<int, 1>> corner_elements;
   corner_elements.reserve(mesh.corner_vertices.size());
   for (int v : mesh.corner_vertices) corner_elements.push_back({v});
@@ -286,6 +275,154 @@ void write_gmsh41(const TetMesh& mesh, std::ostream& out) {
   }
   write_element_blocks(out, 0, 15, corner_elements, levels[0], next_tag);
   out << "$EndElements\n";
+}
+
+// --- Partitioned meshes (TetMesh::tet_partition): Gmsh's partitioned entities ---
+
+/// A model entity restricted to one partition, with its elements.
+struct PartEntity {
+  int tag = 0, parent = 0, partition = 0;
+  std::vector<int> elements;
+};
+
+/// Per dimension, the partitioned entities: for each model entity (label) its
+/// partitions in ascending order, tagged after the largest model tag.
+std::array<std::vector<PartEntity>, 4> partitioned_entities(const TetMesh& mesh,
+                                                            const Levels& levels) {
+  const std::vector<int>* partition_of[4] = {&mesh.corner_partition, &mesh.edge_partition,
+                                             &mesh.triangle_partition, &mesh.tet_partition};
+  std::array<std::vector<PartEntity>, 4> out;
+  for (int dim = 0; dim < 4; ++dim) {
+    const Level& level = levels[dim];
+    int next_tag = level.labels.empty() ? 1 : level.labels.back().id + 1;
+    for (std::size_t k = 0; k < level.labels.size(); ++k) {
+      std::map<int, std::vector<int>> by_partition;
+      for (int e : level.groups[k]) by_partition[(*partition_of[dim])[e]].push_back(e);
+      for (auto& [partition, elements] : by_partition) {
+        out[dim].push_back({next_tag++, level.labels[k].id, partition, std::move(elements)});
+      }
+    }
+  }
+  return out;
+}
+
+void write_partitioned_entities(std::ostream& out, const TetMesh& mesh,
+                                const std::array<std::vector<PartEntity>, 4>& parts) {
+  const int num_partitions =
+      *std::max_element(mesh.tet_partition.begin(), mesh.tet_partition.end());
+  out << "$PartitionedEntities\n"
+      << num_partitions << "\n0\n"
+      << parts[0].size() << ' ' << parts[1].size() << ' ' << parts[2].size() << ' '
+      << parts[3].size() << '\n';
+  for (int dim = 0; dim < 4; ++dim) {
+    for (const PartEntity& e : parts[dim]) {
+      out << e.tag << ' ' << dim << ' ' << e.parent << " 1 " << e.partition << ' ';
+      switch (dim) {
+        case 0:
+          out << corner_position(mesh, e.parent, e.elements) << "1 " << e.parent << '\n';
+          break;
+        case 1:
+          out << bounding_box(mesh, mesh.edges, e.elements) << "1 " << e.parent << " 0\n";
+          break;
+        case 2:
+          out << bounding_box(mesh, mesh.triangles, e.elements) << "1 " << e.parent << " 0\n";
+          break;
+        default:
+          out << bounding_box(mesh, mesh.tets, e.elements) << "1 " << e.parent << " 0\n";
+      }
+    }
+  }
+  out << "$EndPartitionedEntities\n";
+}
+
+/// Each node in one block: the partitioned volume of the tetrahedron with the
+/// smallest partition (then the smallest index) among those using it.
+void write_partitioned_nodes(std::ostream& out, const TetMesh& mesh,
+                             const std::vector<PartEntity>& volumes) {
+  std::vector<int> owner(mesh.vertices.size(), -1);  // a tetrahedron
+  auto claim = [&](int v, int t) {
+    if (owner[v] < 0 || mesh.tet_partition[t] < mesh.tet_partition[owner[v]]) owner[v] = t;
+  };
+  const bool p2 = mesh.tet_mid_nodes.size() == mesh.tets.size();
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+    for (int v : mesh.tets[t]) claim(v, static_cast<int>(t));
+    if (p2) {
+      for (int v : mesh.tet_mid_nodes[t]) claim(v, static_cast<int>(t));
+    }
+  }
+  std::map<std::pair<int, int>, std::size_t> entity_of;  // (subdomain, partition) -> index
+  for (std::size_t i = 0; i < volumes.size(); ++i) {
+    entity_of[{volumes[i].parent, volumes[i].partition}] = i;
+  }
+  std::vector<std::vector<int>> nodes(volumes.size());
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+    if (owner[v] < 0)
+      throw InternalError("write_gmsh41: vertex " + std::to_string(v) + " is in no tetrahedron");
+    const int t = owner[v];
+    nodes[entity_of.at({mesh.tet_subdomain[t].value, mesh.tet_partition[t]})].push_back(
+        static_cast<int>(v));
+  }
+  const std::size_t n = mesh.vertices.size();
+  out << "$Nodes\n" << count_non_empty(nodes) << ' ' << n << " 1 " << n << '\n';
+  std::string line;
+  for (std::size_t i = 0; i < volumes.size(); ++i) {
+    if (nodes[i].empty()) continue;
+    out << "3 " << volumes[i].tag << " 0 " << nodes[i].size() << '\n';
+    for (int v : nodes[i]) {
+      line.clear();
+      append_int(line, v + 1);
+      line += '\n';
+      out << line;
+    }
+    for (int v : nodes[i]) {
+      const Point3& p = mesh.vertices[v];
+      line.clear();
+      append_double(line, p.x);
+      line += ' ';
+      append_double(line, p.y);
+      line += ' ';
+      append_double(line, p.z);
+      line += '\n';
+      out << line;
+    }
+  }
+  out << "$EndNodes\n";
+}
+
+/// The partitioned entities of one dimension as a Level (tags as labels).
+Level partitioned_level(const std::vector<PartEntity>& entities) {
+  Level level;
+  for (const PartEntity& e : entities) {
+    level.labels.push_back({e.tag, {}});
+    level.groups.push_back(e.elements);
+  }
+  return level;
+}
+
+}  // namespace
+
+void write_gmsh41(const TetMesh& mesh, std::ostream& out) {
+  io_detail::check_mesh(mesh);
+  const Levels levels{
+      make_level(io_detail::corner_labels(mesh), io_detail::corner_label_values(mesh)),
+      make_level(io_detail::curve_labels(mesh), io_detail::edge_label_values(mesh)),
+      make_level(io_detail::patch_labels(mesh), io_detail::triangle_label_values(mesh)),
+      make_level(io_detail::subdomain_labels(mesh), io_detail::tet_label_values(mesh))};
+
+  out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
+  write_physical_names(out, levels);
+  write_entities(out, mesh, levels);
+  if (!mesh.tet_partition.empty()) {
+    const auto parts = partitioned_entities(mesh, levels);
+    write_partitioned_entities(out, mesh, parts);
+    write_partitioned_nodes(out, mesh, parts[3]);
+    write_elements(out, mesh,
+                   Levels{partitioned_level(parts[0]), partitioned_level(parts[1]),
+                          partitioned_level(parts[2]), partitioned_level(parts[3])});
+  } else {
+    write_nodes(out, mesh, levels);
+    write_elements(out, mesh, levels);
+  }
   if (!out) throw OutputError("write_gmsh41: the output stream failed");
 }
 

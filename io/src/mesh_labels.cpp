@@ -88,6 +88,27 @@ void check_mid_nodes(const TetMesh& mesh) {
   check_indices(edge_nodes, mesh.vertices.size(), "feature edge mid node of");
 }
 
+/// Partitioned: one partition >= 1 per element of every kind.
+void check_partitions(const TetMesh& mesh) {
+  if (mesh.tet_partition.empty() && mesh.triangle_partition.empty() &&
+      mesh.edge_partition.empty() && mesh.corner_partition.empty()) {
+    return;
+  }
+  if (mesh.tet_partition.size() != mesh.tets.size() ||
+      mesh.triangle_partition.size() != mesh.triangles.size() ||
+      mesh.edge_partition.size() != mesh.edges.size() ||
+      mesh.corner_partition.size() != mesh.corner_vertices.size()) {
+    throw InternalError("TetMesh: the partition arrays do not match the elements");
+  }
+  for (const auto* block : {&mesh.tet_partition, &mesh.triangle_partition, &mesh.edge_partition,
+                            &mesh.corner_partition}) {
+    for (int p : *block) {
+      if (p < 1)
+        throw InternalError("TetMesh: partition " + std::to_string(p) + " (ids start at 1)");
+    }
+  }
+}
+
 std::vector<Label> merge_labels(std::map<int, std::string> named, const std::vector<int>& used) {
   for (int id : used) named.try_emplace(id);
   std::vector<Label> labels;
@@ -131,6 +152,7 @@ void check_mesh(const TetMesh& mesh) {
   check_indices(mesh.triangles, mesh.vertices.size(), "triangle");
   check_features(mesh);
   check_mid_nodes(mesh);
+  check_partitions(mesh);
 }
 
 bool has_features(const TetMesh& mesh) {

@@ -175,6 +175,19 @@ void write_label_array(std::ostream& out, const TetMesh& mesh, const char* name,
   close_array(out);
 }
 
+/// The Int32 cell array "partition": every cell's partition (partition.h).
+void write_partition_array(std::ostream& out, const TetMesh& mesh) {
+  open_array(out, "Int32", "partition");
+  {
+    IntWriter w(out, num_cells(mesh), 24);
+    for (const auto* block : {&mesh.tet_partition, &mesh.triangle_partition, &mesh.edge_partition,
+                              &mesh.corner_partition}) {
+      for (int p : *block) w.add(p);
+    }
+  }
+  close_array(out);
+}
+
 void write_cell_data(std::ostream& out, const TetMesh& mesh) {
   out << "      <CellData Scalars=\"subdomain\">\n";
   write_label_array(out, mesh, "subdomain", 0, mesh.tet_subdomain);
@@ -183,6 +196,7 @@ void write_cell_data(std::ostream& out, const TetMesh& mesh) {
     write_label_array(out, mesh, "curve", 2, mesh.edge_curve);
     write_label_array(out, mesh, "corner", 3, mesh.corner_ids);
   }
+  if (!mesh.tet_partition.empty()) write_partition_array(out, mesh);
   out << "      </CellData>\n";
 }
 

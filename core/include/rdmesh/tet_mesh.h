@@ -53,6 +53,10 @@ struct TetMesh {
   std::vector<std::array<int, 3>> triangle_mid_nodes;
   std::vector<int> edge_mid_nodes;
 
+  /// Partitions (rdmesh/partition.h), 1..n, one per element; all four empty
+  /// for a mesh that is not partitioned.
+  std::vector<int> tet_partition, triangle_partition, edge_partition, corner_partition;
+
   /// Names and ids of the domain's features (copied from the oracle).
   std::vector<SubdomainInfo> subdomains;
   std::vector<PatchInfo> patches;

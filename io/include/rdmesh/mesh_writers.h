@@ -10,6 +10,8 @@
 // A second-order mesh (rdmesh/second_order.h) is written with quadratic
 // elements instead: Gmsh types 11, 9, 8; VTK types 24, 22, 21; Medit
 // TetrahedraP2, TrianglesP2, EdgesP2 (node orders in io/src/element_nodes.h).
+// A partitioned mesh (rdmesh/partition.h) gets Gmsh's $PartitionedEntities
+// and a "partition" cell array in .vtu.
 // Output is deterministic: the same TetMesh gives byte-identical files. A mesh
 // without features (no edges, corner vertices, curves or corners) gives the
 // same files as before the 1D/0D levels existed.
