@@ -2,6 +2,9 @@
 
 #include <sstream>
 
+#include "rdmesh/errors.h"
+#include "rdmesh/mesh_writers.h"
+
 namespace rdmesh::cli {
 
 void add_fem_options(CLI::App& app, FemOptions& opt) {
@@ -10,11 +13,28 @@ void add_fem_options(CLI::App& app, FemOptions& opt) {
                  "triangles, 3-node curve edges; boundary mid-edge nodes on the exact surfaces "
                  "and curves)")
       ->check(CLI::IsMember({1, 2}));
+  app.add_option("--partitions", opt.partitions,
+                 "Split the tetrahedra into N partitions (METIS on the dual graph): .msh "
+                 "partitioned entities, a 'partition' cell array in .vtu")
+      ->check(CLI::Range(1, 1 << 20));
+}
+
+void check_fem_options(const FemOptions& opt, const std::string& input, const std::string& output,
+                       bool surface_only) {
+  if (opt.partitions == 0) return;
+  if (surface_only) {
+    throw InputError(input, "--partitions needs tetrahedra: it cannot go with --surface-only");
+  }
+  if (format_from_path(output) == MeshFormat::Medit) {
+    throw InputError(output,
+                     "a Medit file cannot carry partitions (--partitions): write .msh or .vtu");
+  }
 }
 
 FemResults apply_fem_options(const FemOptions& opt, TetMesh& mesh, const DomainOracle& oracle) {
   FemResults r;
   if (opt.order == 2) r.second_order = make_second_order(mesh, oracle);
+  if (opt.partitions > 0) r.partitions = partition_mesh(mesh, opt.partitions);
   return r;
 }
 
@@ -32,6 +52,16 @@ nlohmann::json fem_json(const FemResults& results) {
   } else {
     j["second_order"] = nullptr;
   }
+  if (const auto& p = results.partitions) {
+    j["partitions"] = {{"parts", p->parts},
+                       {"edge_cut", p->edge_cut},
+                       {"dual_edges", p->dual_edges},
+                       {"imbalance", p->imbalance},
+                       {"tets_per_part", p->tets_per_part},
+                       {"seconds", p->seconds}};
+  } else {
+    j["partitions"] = nullptr;
+  }
   return j;
 }
 
@@ -43,6 +73,11 @@ std::string format_fem_summary(const FemResults& results) {
       << " straightened to keep Jacobians positive, " << r->placement_failures
       << " left on the chord (projection failed); min scaled Jacobian " << r->min_scaled_jacobian
       << ", " << r->seconds << " s\n";
+  }
+  if (const auto& p = results.partitions) {
+    s << "partitions: " << p->parts << " (METIS), edge cut " << p->edge_cut << " of "
+      << p->dual_edges << " shared faces, largest " << p->imbalance << " x the average, "
+      << p->seconds << " s\n";
   }
   return s.str();
 }

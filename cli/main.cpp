@@ -34,6 +34,7 @@ int run(const rdmesh::cli::Options& opt) {
   cli::check_paths(opt);
   (void)format_from_path(opt.output);  // unknown extension: fail before meshing
   cli::check_writable(opt.output);
+  cli::check_fem_options(opt.fem, opt.input, opt.output, opt.surface_only);
   if (!opt.report.empty()) cli::check_writable(opt.report);
   if (!opt.picture.path.empty()) (void)cli::picture_options(opt.picture, opt.input);
 

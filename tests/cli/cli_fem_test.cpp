@@ -1,6 +1,7 @@
 // FEM options on the command line: --order 2 writes quadratic elements in
-// every format, reports them, gives the same bytes twice; bad values are
-// input errors.
+// every format, reports them, gives the same bytes twice; --partitions writes
+// partitioned entities and reports the cut and balance; bad values are input
+// errors.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -69,6 +70,44 @@ TEST(CliFem, BadOrderIsAnInputError) {
     EXPECT_EQ(run.output.rfind("rdmesh: error: ", 0), 0u) << run.output;
     EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << run.output;
     EXPECT_FALSE(std::filesystem::exists(dir.file("out.msh")));
+  }
+}
+
+TEST(CliFem, PartitionsAreWrittenAndReported) {
+  ScratchDir dir;
+  const std::string sample = "'" + source_path("samples/nested_spheres.json") + "'";
+  const CliRun run =
+      run_cli(sample + " -o p.msh --partitions 3 --order 2 --report r.json", dir.path());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_NE(run.output.find("partitions: 3 (METIS), edge cut "), std::string::npos) << run.output;
+  const nlohmann::json r = nlohmann::json::parse(read_file(dir.file("r.json")));
+  const auto& p = r.at("partitions");
+  EXPECT_EQ(p.at("parts").get<int>(), 3);
+  EXPECT_LE(p.at("imbalance").get<double>(), 1.03);
+  EXPECT_GT(p.at("edge_cut").get<int>(), 0);
+  EXPECT_LT(p.at("edge_cut").get<int>(), p.at("dual_edges").get<int>() / 5);
+  std::size_t total = 0;
+  for (const auto& n : p.at("tets_per_part")) total += n.get<std::size_t>();
+  EXPECT_EQ(total, r.at("tets").get<std::size_t>());
+  const std::string msh = read_file(dir.file("p.msh"));
+  EXPECT_NE(msh.find("$PartitionedEntities\n3\n0\n"), std::string::npos);
+  EXPECT_FALSE(r.at("second_order").is_null());
+  const CliRun vtu = run_cli(sample + " -q -o p.vtu --partitions 3", dir.path());
+  ASSERT_EQ(vtu.exit_code, 0) << vtu.output;
+  EXPECT_NE(read_file(dir.file("p.vtu")).find("Name=\"partition\""), std::string::npos);
+}
+
+TEST(CliFem, ImpossiblePartitionsAreInputErrorsBeforeMeshing) {
+  ScratchDir dir;
+  const std::string sample = "'" + source_path("samples/sphere.json") + "'";
+  for (const std::string args :
+       {"--partitions 2 -o out.mesh", "--partitions 0 -o out.msh",
+        "--partitions 2 --surface-only -o out.msh", "--partitions 100000 --size 0.5 -o out.msh"}) {
+    const CliRun run = run_cli(sample + " " + args, dir.path());
+    EXPECT_EQ(run.exit_code, 2) << args << ": " << run.output;
+    EXPECT_EQ(run.output.rfind("rdmesh: error: ", 0), 0u) << run.output;
+    EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << run.output;
+    EXPECT_EQ(dir.entries(), 0u) << args;
   }
 }
 
