@@ -61,7 +61,8 @@ int run(const rdmesh::cli::Options& opt) {
   std::optional<FidelityReport> fidelity;
   if (const auto model = cli::model_measures(*input.oracle, opt.surface_only)) {
     fidelity = check_fidelity(quality, *model, input.oracle->patches(), input.oracle->curves(),
-                              criteria.facet_distance, result.stats.curves_below_min_size);
+                              patch_facet_distances(result.mesh, criteria.facet_distance),
+                              result.stats.curves_below_min_size);
   }
   const double seconds_report =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();

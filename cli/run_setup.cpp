@@ -277,7 +277,7 @@ void write_json_report(const Options& opt, const Criteria& criteria, const Refin
   j["criteria"] = {{"edge_size", field_json(criteria.edge_size)},
                    {"facet_size", field_json(criteria.facet_size)},
                    {"cell_size", field_json(criteria.cell_size)},
-                   {"facet_distance", criteria.facet_distance},
+                   {"facet_distance", field_json(criteria.facet_distance)},
                    {"facet_angle_deg", criteria.facet_angle_deg},
                    {"cell_radius_edge", criteria.cell_radius_edge},
                    {"min_size", criteria.min_size}};

@@ -99,7 +99,7 @@ void Criteria::validate() const {
 ElementEstimate estimate_elements(const Criteria& c, const Box3& box, double curve_length) {
   const Point3 e = box.hi - box.lo;
   const double volume = e.x * e.y * e.z, area = 2 * (e.x * e.y + e.y * e.z + e.z * e.x);
-  const double curvature_size = std::sqrt(box.diagonal() * c.facet_distance);
+  const double curvature_size = std::sqrt(box.diagonal() * c.facet_distance(box.center()));
   ScalarField surface = c.facet_size;
   if (surface.is_uniform()) {
     surface.constant = std::min(surface.constant, curvature_size);
@@ -121,7 +121,7 @@ void check_feasible(const Criteria& c, const Box3& box, double curve_length, dou
   check_field(c.edge_size, "edge size", box, min_size);
   check_field(c.facet_size, "facet size", box, min_size);
   check_field(c.cell_size, "cell size", box, min_size);
-  check_field(ScalarField::uniform(c.facet_distance), "facet distance", box, min_size);
+  check_field(c.facet_distance, "facet distance", box, min_size);
   const ElementEstimate n = estimate_elements(c, box, curve_length);
   if (!(n.total() <= max_elements)) {
     throw InputError("the sizes imply about " + short_number(n.total()) + " elements (" +
@@ -138,7 +138,7 @@ Criteria default_criteria(const Box3& box) {
   c.edge_size = ScalarField::uniform(h);
   c.facet_size = ScalarField::uniform(h);
   c.cell_size = ScalarField::uniform(h);
-  c.facet_distance = h / 10.0;
+  c.facet_distance = ScalarField::uniform(h / 10.0);
   return c;
 }
 

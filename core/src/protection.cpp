@@ -270,13 +270,13 @@ double ProtectionPlanner::radius_of(const BallRef& b) const {
 
 bool ProtectionPlanner::check_arcs() {
   bool changed = false;
-  const double dmax2 = criteria_.facet_distance * criteria_.facet_distance;
   for (std::size_t j = 0; j < curves_.size(); ++j) {
     const CurveData& d = curves_[j];
     const std::vector<BallSample>& s = d.samples;
     for (std::size_t i = 0; i + 1 < s.size(); ++i) {
       const Point3 mid = d.c.curve->point(0.5 * (s[i].t + s[i + 1].t));
       const double sigma = criteria_.edge_size(mid);
+      const double dmax = criteria_.facet_distance(mid), dmax2 = dmax * dmax;
       const bool long_chord = distance(s[i].point, s[i + 1].point) > 2 * sigma;
       if (!long_chord && squared_distance_to_segment(mid, s[i].point, s[i + 1].point) <= dmax2) {
         continue;

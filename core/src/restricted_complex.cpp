@@ -174,7 +174,7 @@ double Refiner::facet_badness(Cell_handle c, int i) const {
   // circumcenter when no vertex is weighted).
   const Point3 oc = weighted ? triangle_orthocenter(p[0], w[0], p[1], w[1], p[2], w[2]) : tc;
   const double d2 = squared_norm(oc - center);
-  const double dmax2 = criteria_.facet_distance * criteria_.facet_distance;
+  const double dmax = criteria_.facet_distance(center), dmax2 = dmax * dmax;
   if (!(d2 <= dmax2)) badness = std::max(badness, std::isfinite(d2) ? d2 / dmax2 : 1e200);
   return badness;
 }
@@ -260,7 +260,7 @@ void Refiner::overlap_conflict(Cell_handle c, int i) {
   const double len = norm(normal);
   if (!(len > 0)) return;
   const Point3 g = (1.0 / 3) * (p[0] + p[1] + p[2]);
-  const Point3 reach = (1.5 * criteria_.facet_distance / len) * normal;
+  const Point3 reach = (1.5 * criteria_.facet_distance(g) / len) * normal;
   if (oracle_.intersect(g - reach, g + reach)) return;
   for (int k = 0; k < n; ++k) add_conflict(pairs[k]);
 }

@@ -236,7 +236,7 @@ double Refiner::arc_badness(int curve, CurveState::Arc a) const {
   const double sigma = criteria_.edge_size(s.center);
   if (s.squared_radius > sigma * sigma) badness = s.squared_radius / (sigma * sigma);
   const double d2 = squared_distance_to_segment(s.center, p, q);
-  const double dmax2 = criteria_.facet_distance * criteria_.facet_distance;
+  const double dmax = criteria_.facet_distance(s.center), dmax2 = dmax * dmax;
   if (d2 > dmax2) badness = std::max(badness, d2 / dmax2);
   (void)curve;
   return badness;

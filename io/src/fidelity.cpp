@@ -1,6 +1,7 @@
 // check_fidelity: the mesh against the model's exact measures (see fidelity.h).
 #include "rdmesh/fidelity.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <set>
@@ -14,29 +15,33 @@ std::string format(const char* pattern, double a, double b, double c, double d) 
   return buffer;
 }
 
-/// Area of the patches that bound subdomain `id` (all patches for id 0): the
-/// model's, or the mesh's where the model's is unknown.
-double bounding_area(SubdomainId id, const ModelMeasures& model, const QualityReport& quality,
-                     const std::vector<PatchInfo>& patches) {
-  double area = 0;
+/// The sum of facet distance x area over the patches that bound subdomain `id`
+/// (all patches for id 0): the model's area, or the mesh's where the model's
+/// is unknown.
+double allowed_deviation(SubdomainId id, const ModelMeasures& model, const QualityReport& quality,
+                         const std::vector<PatchInfo>& patches,
+                         const std::vector<double>& facet_distance) {
+  const double largest =
+      facet_distance.empty() ? 0 : *std::max_element(facet_distance.begin(), facet_distance.end());
+  double sum = 0;
   for (const PatchInfo& p : patches) {
     if (id != kOutside && p.side_a != id && p.side_b != id) continue;
     const std::size_t k = static_cast<std::size_t>(p.id.value) - 1;
+    const double d = k < facet_distance.size() ? facet_distance[k] : largest;
     if (k < model.patch_area.size()) {
-      area += model.patch_area[k];
+      sum += d * model.patch_area[k];
       continue;
     }
     for (const PatchStats& s : quality.patches) {
-      if (s.id == p.id) area += s.area;
+      if (s.id == p.id) sum += d * s.area;
     }
   }
-  return area;
+  return sum;
 }
 
-VolumeCheck compare(SubdomainId id, std::string name, double mesh, double exact, double area,
-                    double facet_distance) {
+VolumeCheck compare(SubdomainId id, std::string name, double mesh, double exact, double allowed) {
   VolumeCheck c{id, std::move(name), mesh, exact, 0, true};
-  c.tolerance = facet_distance * area + 1e-9 * std::fabs(exact);
+  c.tolerance = std::min(allowed, kMaxVolumeDeviation * std::fabs(exact)) + 1e-9 * std::fabs(exact);
   c.passed = std::fabs(mesh - exact) <= c.tolerance;
   return c;
 }
@@ -45,23 +50,25 @@ VolumeCheck compare(SubdomainId id, std::string name, double mesh, double exact,
 
 FidelityReport check_fidelity(const QualityReport& quality, const ModelMeasures& model,
                               const std::vector<PatchInfo>& patches,
-                              const std::vector<CurveInfo>& curves, double facet_distance,
+                              const std::vector<CurveInfo>& curves,
+                              const std::vector<double>& facet_distance,
                               const std::vector<CurveId>& below_min_size) {
   FidelityReport r;
   if (!model.subdomain_volume.empty()) {
     for (const SubdomainStats& s : quality.subdomains) {
       const std::size_t k = static_cast<std::size_t>(s.id.value) - 1;
       if (k >= model.subdomain_volume.size()) continue;
-      r.volumes.push_back(compare(s.id, s.name.empty() ? "subdomain " + std::to_string(s.id.value)
-                                                       : s.name,
-                                  s.volume, model.subdomain_volume[k],
-                                  bounding_area(s.id, model, quality, patches), facet_distance));
+      r.volumes.push_back(
+          compare(s.id, s.name.empty() ? "subdomain " + std::to_string(s.id.value) : s.name,
+                  s.volume, model.subdomain_volume[k],
+                  allowed_deviation(s.id, model, quality, patches, facet_distance)));
     }
   } else if (model.total_volume) {
     double mesh = 0;
     for (const SubdomainStats& s : quality.subdomains) mesh += s.volume;
-    r.volumes.push_back(compare(kOutside, "the domain", mesh, *model.total_volume,
-                                bounding_area(kOutside, model, quality, patches), facet_distance));
+    r.volumes.push_back(
+        compare(kOutside, "the domain", mesh, *model.total_volume,
+                allowed_deviation(kOutside, model, quality, patches, facet_distance)));
   }
   for (const VolumeCheck& v : r.volumes) {
     if (v.passed) continue;
@@ -98,6 +105,42 @@ FidelityReport check_fidelity(const QualityReport& quality, const ModelMeasures&
   }
   r.passed = r.problems.empty();
   return r;
+}
+
+FidelityReport check_fidelity(const QualityReport& quality, const ModelMeasures& model,
+                              const std::vector<PatchInfo>& patches,
+                              const std::vector<CurveInfo>& curves, double facet_distance,
+                              const std::vector<CurveId>& below_min_size) {
+  std::size_t n = 0;
+  for (const PatchInfo& p : patches) n = std::max(n, static_cast<std::size_t>(p.id.value));
+  return check_fidelity(quality, model, patches, curves, std::vector<double>(n, facet_distance),
+                        below_min_size);
+}
+
+std::vector<double> patch_facet_distances(const TetMesh& mesh, const ScalarField& d) {
+  std::vector<double> weighted, area;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const std::size_t k = static_cast<std::size_t>(mesh.triangle_patch[t].value) - 1;
+    if (k >= area.size()) {
+      area.resize(k + 1, 0.0);
+      weighted.resize(k + 1, 0.0);
+    }
+    const Point3& a = mesh.vertices[static_cast<std::size_t>(mesh.triangles[t][0])];
+    const Point3& b = mesh.vertices[static_cast<std::size_t>(mesh.triangles[t][1])];
+    const Point3& c = mesh.vertices[static_cast<std::size_t>(mesh.triangles[t][2])];
+    const double s = 0.5 * norm(cross(b - a, c - a));
+    area[k] += s;
+    weighted[k] += s * (d.is_uniform() ? d.constant : d((1.0 / 3) * (a + b + c)));
+  }
+  std::vector<double> out(area.size(), 0.0);
+  double largest = d.is_uniform() ? d.constant : 0.0;
+  for (std::size_t k = 0; k < area.size(); ++k) {
+    if (area[k] > 0) largest = std::max(largest, out[k] = weighted[k] / area[k]);
+  }
+  for (std::size_t k = 0; k < area.size(); ++k) {
+    if (!(area[k] > 0)) out[k] = largest;
+  }
+  return out;
 }
 
 nlohmann::json to_json(const FidelityReport& r) {

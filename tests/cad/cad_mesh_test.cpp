@@ -63,7 +63,7 @@ TEST_P(CadMeshes, MeshMatchesTheBRep) {
     const Point3 g = (1.0 / 3) * (mesh.vertices[t[0]] + mesh.vertices[t[1]] + mesh.vertices[t[2]]);
     const std::optional<Point3> q = oracle->project(g, mesh.triangle_patch[i]);
     ASSERT_TRUE(q);
-    EXPECT_LE(distance(*q, g), 1.25 * criteria.facet_distance + oracle->tolerance());
+    EXPECT_LE(distance(*q, g), 1.25 * criteria.facet_distance.constant + oracle->tolerance());
   }
   for (const PatchInfo& p : oracle->patches()) {
     const auto tris = test::patch_triangles(mesh, p.id);

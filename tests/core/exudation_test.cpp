@@ -134,7 +134,7 @@ void expect_exudation_keeps_the_mesh(const Runs& r, const DomainOracle& oracle,
     const auto& v = r.on.mesh.vertices;
     const Point3 g = 0.25 * (v[q[0]] + v[q[1]] + v[q[2]] + v[q[3]]);
     if (oracle.locate(g) != r.on.mesh.tet_subdomain[t] &&
-        distance_to_boundary(g) > criteria.facet_distance)
+        distance_to_boundary(g) > criteria.facet_distance.constant)
       ++wrong;
   }
   EXPECT_EQ(wrong, 0u) << "tets whose centroid is far from their subdomain";

@@ -46,7 +46,7 @@ void expect_feature_properties(const Meshed& m) {
     const Curve& curve = oracle.curve(info.id);
     const Point3 mid = 0.5 * (mesh.vertices[edge[0]] + mesh.vertices[edge[1]]);
     EXPECT_LE(distance(curve.point(curve.closest(mid, info.t_begin, info.t_end)), mid),
-              m.criteria.facet_distance);
+              m.criteria.facet_distance.constant);
   }
   for (const CurveInfo& c : mesh.curves) {
     std::size_t count = 0;

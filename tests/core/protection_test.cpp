@@ -83,7 +83,7 @@ void expect_protected(const Layout& l, const ProtectionPlan& plan, const Criteri
       // B3: the chord within twice the edge size and near the curve.
       const Point3 mid = curve.point(0.5 * (s[i].t + s[i + 1].t));
       EXPECT_LE(distance(s[i].point, s[i + 1].point), 2 * criteria.edge_size(mid) * (1 + 1e-12));
-      EXPECT_LE(sagitta(curve, s[i], s[i + 1]), criteria.facet_distance * (1 + 1e-9));
+      EXPECT_LE(sagitta(curve, s[i], s[i + 1]), criteria.facet_distance.constant * (1 + 1e-9));
     }
     const std::size_t first = info.closed ? 0 : 1;
     for (std::size_t i = first; i + 1 < s.size(); ++i) {

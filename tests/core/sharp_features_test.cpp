@@ -77,7 +77,7 @@ TEST_P(SharpFeatures, CappedCylinderHasThreePatchesAndTwoClosedChains) {
     EXPECT_NEAR(std::hypot(a.x, a.y), 0.5, 1e-9);
     EXPECT_NEAR(a.z, z, 1e-9);
     const Point3 m = 0.5 * (a + b);
-    EXPECT_LE(0.5 - std::hypot(m.x, m.y), criteria.facet_distance);
+    EXPECT_LE(0.5 - std::hypot(m.x, m.y), criteria.facet_distance.constant);
   }
   const double exact = M_PI * 0.25 * 1.0;
   EXPECT_NEAR(test::volume(mesh), exact, 0.01 * exact);

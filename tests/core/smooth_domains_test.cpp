@@ -56,7 +56,7 @@ TEST(SmoothDomains, UnitSphereIsAClosedSurfaceOfTheRightVolume) {
   for (const auto& t : mesh.triangles) {
     for (int i : t) EXPECT_NEAR(norm(mesh.vertices[i]), 1.0, 1e-8);
     const Point3 g = (1.0 / 3.0) * (mesh.vertices[t[0]] + mesh.vertices[t[1]] + mesh.vertices[t[2]]);
-    EXPECT_LE(1.0 - norm(g), criteria.facet_distance);
+    EXPECT_LE(1.0 - norm(g), criteria.facet_distance.constant);
   }
   // Size criterion R5.1 holds for every cell: circumradius <= h (checked via edges <= 2h).
   for (const auto& t : mesh.tets) {

@@ -74,7 +74,7 @@ TEST(SurfaceOnly, OpenWavySheet) {
   }
   for (const auto& t : mesh.triangles) {
     const Point3 g = (1.0 / 3) * (mesh.vertices[t[0]] + mesh.vertices[t[1]] + mesh.vertices[t[2]]);
-    EXPECT_LE(distance(*oracle.project(g, PatchId{1}), g), 1.5 * criteria.facet_distance);
+    EXPECT_LE(distance(*oracle.project(g, PatchId{1}), g), 1.5 * criteria.facet_distance.constant);
   }
   // Consistently oriented; the border is exactly the border curves' edges,
   // each curve one open chain between its corners.

@@ -118,8 +118,8 @@ TEST_P(TriangleMeshInputs, MeshedFaithfully) {
     if (!near_feature) worst_center = std::max(worst_center, dc);
     worst_centroid = std::max(worst_centroid, dg);
   }
-  EXPECT_LE(worst_center, criteria.facet_distance * (1 + 1e-9)) << c.file;
-  EXPECT_LE(worst_centroid, 1.5 * criteria.facet_distance) << c.file;
+  EXPECT_LE(worst_center, criteria.facet_distance.constant * (1 + 1e-9)) << c.file;
+  EXPECT_LE(worst_centroid, 1.5 * criteria.facet_distance.constant) << c.file;
 
   EXPECT_NEAR(test::volume(mesh), oracle->volume(), 0.01 * oracle->volume()) << c.file;
 }

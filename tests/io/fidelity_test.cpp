@@ -56,8 +56,42 @@ TEST(Fidelity, AVolumeBeyondTheToleranceFailsAndIsNamed) {
       << r.problems[0];
   EXPECT_FALSE(r.volumes[0].passed);
   EXPECT_TRUE(r.volumes[1].passed);
-  // Within the tolerance (facet distance 0.1: 0.006 allowed) the same mesh passes.
-  EXPECT_TRUE(check_fidelity(q, two_cube_model(0.1, 2e-3), mesh.patches, mesh.curves, 0.1).passed);
+  // At a facet distance of 0.1 the areas would allow 0.006, more than the
+  // solid: the tolerance stops at 10% of the volume, and half of it lost fails.
+  const FidelityReport coarse =
+      check_fidelity(q, two_cube_model(0.1, 2e-3), mesh.patches, mesh.curves, 0.1);
+  EXPECT_FALSE(coarse.passed);
+  EXPECT_NEAR(coarse.volumes[0].tolerance, kMaxVolumeDeviation * 2e-3 + 2e-12, 1e-15);
+  // 5% lost passes there.
+  EXPECT_TRUE(
+      check_fidelity(q, two_cube_model(0.1, 1.05e-3), mesh.patches, mesh.curves, 0.1).passed);
+}
+
+TEST(Fidelity, AVaryingFacetDistanceGivesEachSubdomainItsOwnTolerance) {
+  // Fine on the left cube (x <= s), coarse elsewhere: the left skin (patch 1)
+  // and the interface x = s (patch 3) get the fine value, the right skin the
+  // coarse one.
+  const double s = 0.1;
+  const TetMesh mesh = testing::two_cube_mesh(s);
+  const ScalarField d{0.0, [s](const Point3& p) { return p.x < s + 1e-12 ? 1e-4 : 1e-2; }};
+  const std::vector<double> per_patch = patch_facet_distances(mesh, d);
+  ASSERT_EQ(per_patch.size(), 3u);
+  EXPECT_DOUBLE_EQ(per_patch[0], 1e-4);
+  EXPECT_DOUBLE_EQ(per_patch[1], 1e-2);
+  EXPECT_DOUBLE_EQ(per_patch[2], 1e-4);
+  const QualityReport q = measure_quality(mesh, nullptr);
+  const ModelMeasures model = two_cube_model(s, 1.05e-3);  // the left cube lost 5% of it
+  const FidelityReport r = check_fidelity(q, model, mesh.patches, mesh.curves, per_patch);
+  ASSERT_EQ(r.volumes.size(), 2u);
+  // Left: 1e-4 x (its skin, 5 s^2, and the interface, s^2).
+  EXPECT_NEAR(r.volumes[0].tolerance, 1e-4 * 6 * s * s + 1.05e-12, 1e-15);
+  EXPECT_FALSE(r.volumes[0].passed);
+  // Right: 1e-2 x 5 s^2 + 1e-4 x s^2 = 5.01e-4, above 10% of s^3: capped.
+  EXPECT_NEAR(r.volumes[1].tolerance, 1e-4 + 1e-12, 1e-15);
+  EXPECT_TRUE(r.volumes[1].passed);
+  // At the coarse value everywhere the same mesh passes (6e-4, capped at 1.05e-4).
+  EXPECT_TRUE(check_fidelity(q, model, mesh.patches, mesh.curves, 1e-2).passed);
+  EXPECT_EQ(patch_facet_distances(mesh, ScalarField::uniform(0.5)), std::vector<double>(3, 0.5));
 }
 
 TEST(Fidelity, AWholeDomainVolumeIsCheckedWhenSubdomainsAreUnknown) {

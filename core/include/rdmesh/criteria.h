@@ -16,8 +16,9 @@ struct Criteria {
   /// radius-edge bound 1 / (2 sin angle)); in (0, 30]: above 30 termination is not guaranteed.
   double facet_angle_deg = 25.0;
   /// R4 approximation: distance between a restricted facet's circumcenter and
-  /// its surface Delaunay ball center <= facet_distance.
-  double facet_distance = 0.01;
+  /// its surface Delaunay ball center <= facet_distance(ball center). A field, so
+  /// that the boundary follows thin parts as closely as their size asks.
+  ScalarField facet_distance = ScalarField::uniform(0.01);
   /// R5.1: circumradius of a tetrahedron <= cell_size(circumcenter).
   ScalarField cell_size = ScalarField::uniform(0.1);
   /// R5.2 (beta_3): circumradius / shortest edge of a tetrahedron; >= 2 (RR-7912's bound for

@@ -11,9 +11,14 @@
 //   - the volume of each subdomain is the model's within a tolerance derived
 //     from the criteria: a boundary that stays within the facet distance d of
 //     the true surface encloses a volume within d x area of the surfaces
-//     around the subdomain, so the tolerance is d x (area of the subdomain's
-//     patches; the model's when known, else the mesh's), plus 1e-9 of the
-//     volume for rounding. (A mesh whose boundary
+//     around the subdomain, so the tolerance is the sum over the subdomain's
+//     patches of d x area (the model's area when known, else the mesh's; d
+//     the facet distance averaged over the patch's triangles, as it may vary:
+//     near slender CAD parts it follows their thickness), plus 1e-9 of the
+//     volume for rounding. Whatever the criteria, the tolerance is at most
+//     kMaxVolumeDeviation (10%) of the volume: a facet distance larger than
+//     the part is thick allows any loss, and a mesh that lost a tenth of a
+//     solid does not match it, whatever was asked. (A mesh whose boundary
 //     follows its surfaces to d passes; one that lost a piece of the model, or
 //     whose labels leaked, does not.)
 // Subdomains whose model volume is unknown are checked as a whole when the
@@ -29,6 +34,10 @@
 #include "rdmesh/quality_report.h"
 
 namespace rdmesh {
+
+/// The largest relative volume deviation check_fidelity accepts, whatever the
+/// facet distance (see the file comment).
+inline constexpr double kMaxVolumeDeviation = 0.1;
 
 /// Exact measures of the model (from OpenCASCADE's BRepGProp for CAD models,
 /// from the input triangles for triangle meshes).
@@ -69,10 +78,23 @@ struct FidelityReport {
 /// not be measured) with `model`. `patches` and `curves` are the oracle's;
 /// `facet_distance` the criteria's; `below_min_size` the curves the run could
 /// not separate from other features (RefinementStats::curves_below_min_size).
+/// `patch_facet_distance[k]` is the facet distance on patch k + 1
+/// (patch_facet_distances); a patch past its end gets its largest value.
+FidelityReport check_fidelity(const QualityReport& quality, const ModelMeasures& model,
+                              const std::vector<PatchInfo>& patches,
+                              const std::vector<CurveInfo>& curves,
+                              const std::vector<double>& patch_facet_distance,
+                              const std::vector<CurveId>& below_min_size = {});
+/// The same with one facet distance for every patch.
 FidelityReport check_fidelity(const QualityReport& quality, const ModelMeasures& model,
                               const std::vector<PatchInfo>& patches,
                               const std::vector<CurveInfo>& curves, double facet_distance,
                               const std::vector<CurveId>& below_min_size = {});
+
+/// The facet distance `d` averaged (by area) over each patch's boundary
+/// triangles of `mesh`, at their centroids; index = patch id - 1. A patch
+/// without triangles gets the largest value.
+std::vector<double> patch_facet_distances(const TetMesh& mesh, const ScalarField& d);
 
 /// The report as JSON: passed, volumes (id, name, mesh, model, tolerance,
 /// passed), missing_patches, broken_curves (ids) and problems.

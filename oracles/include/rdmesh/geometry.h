@@ -88,6 +88,12 @@ struct ScalarField {
   double constant = 0.0;                       ///< used when `field` is empty
   std::function<double(const Point3&)> field;  ///< optional spatially varying value
 
+  ScalarField() = default;
+  /// A constant field (implicit: a number is a uniform field).
+  ScalarField(double value) : constant(value) {}  // NOLINT(google-explicit-constructor)
+  ScalarField(double value, std::function<double(const Point3&)> f)
+      : constant(value), field(std::move(f)) {}
+
   static ScalarField uniform(double v) { return ScalarField{v, {}}; }
   bool is_uniform() const { return !field; }
   double operator()(const Point3& p) const { return field ? field(p) : constant; }
