@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace rdmesh::cli {
@@ -16,6 +17,8 @@ namespace {
 constexpr double kPerThickness = 0.5;  ///< size / thickness near a slender part
 constexpr double kGrading = 0.5;       ///< size growth per unit of distance from it
 constexpr double kFloor = 1.0 / 50;    ///< the sizes go no lower than this fraction of the size
+constexpr double kDistancePerSize = 0.1;           ///< facet distance / facet size, as by default
+constexpr double kMinSizePerThickness = 1.0 / 50;  ///< default minimum size / thinnest solid
 
 struct ThinFace {
   Box3 box;
@@ -72,9 +75,61 @@ class ThicknessLimit {
   std::vector<double> value_;
 };
 
+/// The facet distance near thin faces and in thin solids: a tenth of the size
+/// the thickness asks for, never below twice the minimum size (the guard would
+/// refuse the points). A solid's thickness here is 2 V / A (a plate's
+/// thickness, a rod's radius): a small solid of an assembly (a nut, a washer)
+/// meshed at a facet distance close to its thickness may lose half its volume
+/// within that distance, and the fidelity check, whose tolerance follows the
+/// facet distance, would not see it.
+void follow_solid_thickness(const CadOracle& cad, Criteria& criteria, std::vector<ThinFace> thin,
+                            bool min_size_too) {
+  const Box3 box = cad.bounding_box();
+  const double global = criteria.facet_distance(box.center());
+  std::vector<double> area;
+  for (const PatchInfo& p : cad.patches()) {
+    const std::size_t k = static_cast<std::size_t>(p.id.value);
+    if (area.size() < k) area.resize(k, 0.0);
+    area[k - 1] = cad.exact_area(p.id);
+  }
+  double thinnest = std::numeric_limits<double>::infinity();
+  for (const SubdomainInfo& s : cad.subdomains()) {
+    double a = 0;
+    std::optional<Box3> solid_box;
+    for (const PatchInfo& p : cad.patches()) {
+      if (p.side_a != s.id && p.side_b != s.id) continue;
+      a += area[static_cast<std::size_t>(p.id.value) - 1];
+      const Box3 b = cad.patch_box(p.id);
+      if (!solid_box) solid_box = b;
+      solid_box->lo = {std::min(solid_box->lo.x, b.lo.x), std::min(solid_box->lo.y, b.lo.y),
+                       std::min(solid_box->lo.z, b.lo.z)};
+      solid_box->hi = {std::max(solid_box->hi.x, b.hi.x), std::max(solid_box->hi.y, b.hi.y),
+                       std::max(solid_box->hi.z, b.hi.z)};
+    }
+    if (!(a > 0) || !solid_box) continue;
+    const double thickness = 2 * cad.exact_volume(s.id) / a;
+    if (!(thickness > 0)) continue;
+    thinnest = std::min(thinnest, thickness);
+    const double size = kPerThickness * thickness;
+    if (kDistancePerSize * size < global) thin.push_back({*solid_box, size});
+  }
+  if (min_size_too && thinnest < std::numeric_limits<double>::infinity()) {
+    criteria.min_size = std::min(criteria.min_size_for(box), kMinSizePerThickness * thinnest);
+  }
+  if (thin.empty()) return;
+  const double h = std::min(criteria.facet_size(box.center()), criteria.cell_size(box.center()));
+  auto limit = std::make_shared<const ThicknessLimit>(box, 0.25 * h, thin);
+  const double floor = 2 * criteria.min_size_for(box);
+  const ScalarField d = criteria.facet_distance;
+  criteria.facet_distance =
+      ScalarField{0.0, [limit, d, floor](const Point3& p) {
+                    return std::min(d(p), std::max(floor, kDistancePerSize * (*limit)(p)));
+                  }};
+}
+
 }  // namespace
 
-int follow_thickness(const CadOracle& cad, Criteria& criteria) {
+int follow_thickness(const CadOracle& cad, Criteria& criteria, FollowedDefaults defaults) {
   std::vector<ThinFace> thin;
   const Box3 box = cad.bounding_box();
   const double h = std::min(criteria.facet_size(box.center()), criteria.cell_size(box.center()));
@@ -84,14 +139,16 @@ int follow_thickness(const CadOracle& cad, Criteria& criteria) {
     const double size = std::max(kPerThickness * *t, kFloor * h);
     if (size < h) thin.push_back({cad.patch_box(p.id), size});
   }
-  if (thin.empty()) return 0;
-  auto limit = std::make_shared<const ThicknessLimit>(box, 0.25 * h, thin);
-  auto limited = [limit](const ScalarField& f) {
-    return ScalarField{0.0, [limit, f](const Point3& p) { return std::min(f(p), (*limit)(p)); }};
-  };
-  criteria.facet_size = limited(criteria.facet_size);
-  criteria.cell_size = limited(criteria.cell_size);
-  criteria.edge_size = limited(criteria.edge_size);
+  if (!thin.empty()) {
+    auto limit = std::make_shared<const ThicknessLimit>(box, 0.25 * h, thin);
+    auto limited = [limit](const ScalarField& f) {
+      return ScalarField{0.0, [limit, f](const Point3& p) { return std::min(f(p), (*limit)(p)); }};
+    };
+    criteria.facet_size = limited(criteria.facet_size);
+    criteria.cell_size = limited(criteria.cell_size);
+    criteria.edge_size = limited(criteria.edge_size);
+  }
+  if (defaults.facet_distance) follow_solid_thickness(cad, criteria, thin, defaults.min_size);
   return static_cast<int>(thin.size());
 }
 

@@ -233,7 +233,7 @@ Criteria resolve_criteria(const Options& opt, const LoadedInput& input) {
   // CAD models without sizes asked: follow the thickness of slender parts.
   const auto* cad = dynamic_cast<const CadOracle*>(input.oracle.get());
   if (cad && !opt.size && !opt.facet_size && !opt.cell_size && !opt.edge_size) {
-    follow_thickness(*cad, c);
+    follow_thickness(*cad, c, {!h.facet_distance && !opt.facet_distance, !opt.min_size});
   }
   try {
     c.validate();
