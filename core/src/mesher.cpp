@@ -48,13 +48,19 @@ detail::ProtectionPlanner make_planner(const DomainOracle& oracle, const Criteri
                                    &oracle);
 }
 
-void record_protection(const detail::ProtectionPlan& plan,
+void record_protection(const detail::ProtectionPlanner& planner, const detail::ProtectionPlan& plan,
                        const std::vector<detail::BallRef>& conflicts, RefinementStats& stats) {
   stats.protecting_balls = plan.balls;
   stats.min_ball_radius = plan.min_radius;
   stats.protection_conflicts = plan.unresolved_pairs + conflicts.size();
   stats.protection_features = plan.unresolved;
-  for (int j : plan.unresolved_curves) stats.curves_below_min_size.push_back(CurveId(j + 1));
+  // Curves whose balls (or whose corners' balls) could not be separated from
+  // other features, or kept off a patch they do not bound, at the minimum size.
+  std::set<int> below(plan.unresolved_curves.begin(), plan.unresolved_curves.end());
+  for (const detail::BallRef& b : conflicts) {
+    for (const int j : planner.curves_touching(b)) below.insert(j);
+  }
+  for (const int j : below) stats.curves_below_min_size.push_back(CurveId(j + 1));
   for (const detail::BallRef& b : conflicts) {
     if (stats.protection_features.size() >= 20) break;
     stats.protection_features.push_back(
@@ -143,7 +149,7 @@ MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& given,
   result.mesh = refiner->extract_mesh();
   result.stats = refiner->stats();
   if (protect) {
-    record_protection(plan, refiner->conflicts(), result.stats);
+    record_protection(*planner, plan, refiner->conflicts(), result.stats);
     result.stats.protection_restarts = restarts;
   }
   result.stats.seconds_protect = protect_seconds;

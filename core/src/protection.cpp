@@ -294,6 +294,17 @@ bool ProtectionPlanner::check_arcs() {
   return changed;
 }
 
+std::vector<int> ProtectionPlanner::curves_touching(const BallRef& ball) const {
+  if (ball.curve >= 0) return {ball.curve};
+  std::vector<int> out;
+  for (std::size_t j = 0; j < curves_.size(); ++j) {
+    if (curves_[j].start == ball.corner || curves_[j].end == ball.corner) {
+      out.push_back(static_cast<int>(j));
+    }
+  }
+  return out;
+}
+
 std::string ProtectionPlanner::name(const BallRef& b) const {
   return b.curve < 0 ? "corner " + std::to_string(b.corner + 1)
                      : "curve " + curves_[b.curve].c.info.name;
@@ -424,7 +435,7 @@ bool ProtectionPlanner::separate_balls(bool record) {
                 for (const BallRef& r : {b.ref, o.ref}) clamp_radius(r, 0.95 * dist);
                 ++unresolved_pairs_;
                 for (const BallRef& r : {b.ref, o.ref}) {
-                  if (r.curve >= 0) unresolved_curve_[r.curve] = 1;
+                  for (const int j : curves_touching(r)) unresolved_curve_[j] = 1;
                 }
                 const std::string what = name(b.ref) + " near " + name(o.ref);
                 if (unresolved_.size() < 20 &&

@@ -139,6 +139,8 @@ class ProtectionPlanner {
   /// unrelated ones overlapping where the surface bends) and plans again into `plan`;
   /// false (plan untouched) when none of them can shrink any more.
   bool shrink(const std::vector<BallRef>& balls, ProtectionPlan& plan);
+  /// The curves (indices) a ball protects: its own, or those ending at its corner.
+  std::vector<int> curves_touching(const BallRef& ball) const;
 
  private:
   struct Cap {

@@ -78,12 +78,26 @@ FidelityReport check_fidelity(const QualityReport& quality, const ModelMeasures&
                                          (v.mesh_volume - v.model_volume) * scale,
                                          v.tolerance * scale));
   }
+  std::set<int> unresolved;
+  for (const CurveId& c : below_min_size) unresolved.insert(c.value);
   std::set<int> meshed;
   for (const PatchStats& p : quality.patches) {
     if (p.triangles > 0) meshed.insert(p.id.value);
   }
   for (const PatchInfo& p : patches) {
     if (meshed.count(p.id.value)) continue;
+    // A face bounded only by curves the protection could not separate from
+    // other features (closer than the minimum size) is below it as a whole.
+    bool bounded = false, all_below = true;
+    for (const CurveInfo& c : curves) {
+      if (std::find(c.patches.begin(), c.patches.end(), p.id) == c.patches.end()) continue;
+      bounded = true;
+      all_below = all_below && unresolved.count(c.id.value) > 0;
+    }
+    if (bounded && all_below) {
+      r.unresolved_patches.push_back(p.id);
+      continue;
+    }
     r.missing_patches.push_back(p.id);
     r.problems.push_back("patch " + std::to_string(p.id.value) + " has no triangle");
   }
@@ -91,8 +105,6 @@ FidelityReport check_fidelity(const QualityReport& quality, const ModelMeasures&
   for (const CurveStats& c : quality.curves) {
     if (c.is_chain) chained.insert(c.id.value);
   }
-  std::set<int> unresolved;
-  for (const CurveId& c : below_min_size) unresolved.insert(c.value);
   for (const CurveInfo& c : curves) {
     if (chained.count(c.id.value)) continue;
     if (unresolved.count(c.id.value)) {
@@ -161,6 +173,8 @@ nlohmann::json to_json(const FidelityReport& r) {
   for (const CurveId& c : r.broken_curves) j["broken_curves"].push_back(c.value);
   j["curves_below_min_size"] = nlohmann::json::array();
   for (const CurveId& c : r.unresolved_curves) j["curves_below_min_size"].push_back(c.value);
+  j["patches_below_min_size"] = nlohmann::json::array();
+  for (const PatchId& p : r.unresolved_patches) j["patches_below_min_size"].push_back(p.value);
   j["problems"] = r.problems;
   return j;
 }

@@ -137,6 +137,32 @@ TEST(Fidelity, APatchWithoutTrianglesAndABrokenCurveFail) {
   EXPECT_EQ(j["broken_curves"][0].get<int>(), 1);
 }
 
+TEST(Fidelity, ASliverFaceBoundedByCurvesBelowTheMinimumSizeIsListedNotFailed) {
+  const TetMesh mesh = testing::featured_two_cube_mesh(0.1);
+  const ModelMeasures model = two_cube_model(0.1, 1e-3);
+  std::vector<PatchInfo> patches = mesh.patches;
+  patches.push_back({PatchId(4), "sliver", SubdomainId(1), SubdomainId(2)});
+  std::vector<CurveInfo> curves = mesh.curves;
+  CurveInfo edge;
+  edge.id = CurveId(static_cast<int>(curves.size()) + 1);
+  edge.name = "sliver edge";
+  edge.patches = {PatchId(1), PatchId(4)};
+  curves.push_back(edge);
+  const QualityReport q = measure_quality(mesh, nullptr);
+  // Its only curve is below the minimum size (and not meshed): listed, passes.
+  FidelityReport r = check_fidelity(q, model, patches, curves, 1e-3, {edge.id});
+  EXPECT_TRUE(r.passed) << summarize_problems(r);
+  ASSERT_EQ(r.unresolved_patches.size(), 1u);
+  EXPECT_EQ(r.unresolved_patches[0], PatchId(4));
+  EXPECT_EQ(to_json(r)["patches_below_min_size"][0].get<int>(), 4);
+  // A resolved curve among its curves: the face was missed, a failure.
+  curves.back().patches.push_back(PatchId(2));
+  curves[0].patches.push_back(PatchId(4));
+  r = check_fidelity(q, model, patches, curves, 1e-3, {edge.id});
+  EXPECT_FALSE(r.passed);
+  EXPECT_EQ(r.missing_patches, std::vector<PatchId>{PatchId(4)});
+}
+
 TEST(Fidelity, TheSummaryNamesThreeProblemsAndCountsTheRest) {
   FidelityReport r;
   r.problems = {"a", "b", "c", "d", "e"};

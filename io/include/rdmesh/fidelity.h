@@ -3,7 +3,8 @@
 // A run that ends with a mesh missing part of the model must not report
 // success. After meshing a CAD model or a triangle mesh, whose exact volumes
 // and areas are known, the mesh is compared with the model:
-//   - every patch of the model has triangles in the mesh;
+//   - every patch of the model has triangles in the mesh, except a sliver face
+//     all of whose curves are below the minimum size (next item): listed;
 //   - every curve is one chain of feature edges (QualityReport's is_chain),
 //     except curves closer to another feature than the run's minimum size (the
 //     protection could not separate them: RefinementStats::curves_below_min_size),
@@ -69,6 +70,9 @@ struct FidelityReport {
   std::vector<CurveId> broken_curves;    ///< curves that are not one chain of edges
   /// Curves below the minimum size that are not one chain: not a failure.
   std::vector<CurveId> unresolved_curves;
+  /// Patches without triangles all of whose curves are below the minimum size:
+  /// not a failure.
+  std::vector<PatchId> unresolved_patches;
   /// One short phrase per problem, e.g. "solid_1: volume 1.466e+06, model 5.215e+06
   /// (-71.9%, allowed +-3.1%)"; empty when passed.
   std::vector<std::string> problems;
