@@ -1,4 +1,5 @@
 // rdmesh_cad_tool: small helpers around the CAD oracle for benchmarks and samples.
+//   rdmesh_cad_tool faces FILE          per patch: area, box, sides
 //   rdmesh_cad_tool info FILE           JSON: solids, patches, curves, corners, bbox, exact
 //                                       volume (whole and per subdomain) and area
 //   rdmesh_cad_tool thickness FILE      the thickness behind each curved face
@@ -38,6 +39,16 @@ int main(int argc, char** argv) {
       for (const PatchInfo& p : o->patches()) {
         const auto t = o->curved_thickness(p.id);
         if (t) std::printf("patch %d thickness %.6g\n", p.id.value, *t);
+      }
+      return 0;
+    }
+    if (cmd == "faces" && argc == 3) {
+      const auto o = load_cad_file(argv[2]);
+      for (const PatchInfo& p : o->patches()) {
+        const Box3 b = o->patch_box(p.id);
+        std::printf("patch %d area %.6g box (%g %g %g) (%g %g %g) sides %d %d\n", p.id.value,
+                    o->exact_area(p.id), b.lo.x, b.lo.y, b.lo.z, b.hi.x, b.hi.y, b.hi.z,
+                    p.side_a.value, p.side_b.value);
       }
       return 0;
     }
