@@ -19,6 +19,7 @@ constexpr double kGrading = 0.5;       ///< size growth per unit of distance fro
 constexpr double kFloor = 1.0 / 50;    ///< the sizes go no lower than this fraction of the size
 constexpr double kDistancePerSize = 0.1;           ///< facet distance / facet size, as by default
 constexpr double kMinSizePerThickness = 1.0 / 50;  ///< default minimum size / thinnest solid
+constexpr double kMinSizeVolumeFraction = 1e-6;    ///< smaller solids do not set it
 
 struct ThinFace {
   Box3 box;
@@ -93,6 +94,7 @@ void follow_solid_thickness(const CadOracle& cad, Criteria& criteria, std::vecto
     area[k - 1] = cad.exact_area(p.id);
   }
   double thinnest = std::numeric_limits<double>::infinity();
+  const double total = cad.exact_volume();
   for (const SubdomainInfo& s : cad.subdomains()) {
     double a = 0;
     std::optional<Box3> solid_box;
@@ -107,9 +109,13 @@ void follow_solid_thickness(const CadOracle& cad, Criteria& criteria, std::vecto
                        std::max(solid_box->hi.z, b.hi.z)};
     }
     if (!(a > 0) || !solid_box) continue;
-    const double thickness = 2 * cad.exact_volume(s.id) / a;
+    const double volume = cad.exact_volume(s.id);
+    const double thickness = 2 * volume / a;
     if (!(thickness > 0)) continue;
-    thinnest = std::min(thinnest, thickness);
+    // A solid a million times smaller than the model (a 10 mm nut in a 300 m
+    // assembly whose units went wrong: occtdata_as1_motor) does not set the
+    // model's minimum size: every gap of the large parts would be refined to it.
+    if (volume >= kMinSizeVolumeFraction * total) thinnest = std::min(thinnest, thickness);
     const double size = kPerThickness * thickness;
     if (kDistancePerSize * size < global) thin.push_back({*solid_box, size});
   }

@@ -19,7 +19,8 @@ namespace rdmesh::cli {
 /// thickness lost 17% of bm2_ec_leverrod's volume) and the fidelity check's
 /// tolerance, which follows the facet distance, means something there; the
 /// minimum size (1e-4 of the box's diagonal by default) goes down to 1/50 of
-/// the thinnest solid's mean thickness, so that this facet distance can be met.
+/// the thinnest solid's mean thickness (among solids of at least 1e-6 of the
+/// model's volume), so that this facet distance can be met.
 struct FollowedDefaults {
   bool facet_distance = true;
   bool min_size = true;
