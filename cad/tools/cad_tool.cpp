@@ -1,4 +1,5 @@
 // rdmesh_cad_tool: small helpers around the CAD oracle for benchmarks and samples.
+//   rdmesh_cad_tool load isolated|in-process FILE   seconds to load FILE
 //   rdmesh_cad_tool faces FILE          per patch: area, box, sides
 //   rdmesh_cad_tool info FILE           JSON: solids, patches, curves, corners, bbox, exact
 //                                       volume (whole and per subdomain) and area
@@ -6,6 +7,7 @@
 //   rdmesh_cad_tool curves FILE         each curve's length, corners and ends
 //   rdmesh_cad_tool write SHAPE FILE    writes a test shape (box, cylinder, box_minus_cylinder,
 //                                       two_boxes, sphere) as STEP / BREP / IGES
+#include <chrono>
 #include <cstdio>
 #include <iostream>
 #include <map>
@@ -41,6 +43,17 @@ int main(int argc, char** argv) {
         if (t) std::printf("patch %d thickness %.6g\n", p.id.value, *t);
       }
       return 0;
+    }
+    if (cmd == "load" && argc == 4) {
+      // Seconds to load FILE: read (isolated in a child or in this process),
+      // sew, check and build the oracle.
+      CadOptions options;
+      options.isolate = std::string(argv[2]) == "isolated";
+      const auto t = std::chrono::steady_clock::now();
+      const auto o = load_cad_file(argv[3], options);
+      std::printf("%.6f\n",
+                  std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count());
+      return o->patches().empty() ? 1 : 0;
     }
     if (cmd == "faces" && argc == 3) {
       const auto o = load_cad_file(argv[2]);
