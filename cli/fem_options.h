@@ -8,6 +8,8 @@
 #include <optional>
 #include <string>
 
+#include "rdmesh/criteria.h"
+#include "rdmesh/entity_sizes.h"
 #include "rdmesh/oracle.h"
 #include "rdmesh/partition.h"
 #include "rdmesh/second_order.h"
@@ -16,8 +18,11 @@
 namespace rdmesh::cli {
 
 struct FemOptions {
-  int order = 1;       ///< --order 1|2: 2 = 10-node tetrahedra on the exact geometry
-  int partitions = 0;  ///< --partitions N: METIS on the dual graph, 0 = none
+  int order = 1;                     ///< --order 1|2: 2 = 10-node tetrahedra on the exact geometry
+  int partitions = 0;                ///< --partitions N: METIS on the dual graph, 0 = none
+  std::vector<std::string> size_on;  ///< --size-on KIND:WHICH=SIZE (repeatable)
+  std::string sizes_file;            ///< --sizes FILE.json: {"KIND:WHICH": SIZE, "grade": G}
+  std::optional<double> grade;       ///< --grade G (default: the file's, else 1.4)
 };
 
 void add_fem_options(CLI::App& app, FemOptions& opt);
@@ -27,15 +32,25 @@ void add_fem_options(CLI::App& app, FemOptions& opt);
 void check_fem_options(const FemOptions& opt, const std::string& input, const std::string& output,
                        bool surface_only);
 
+/// Reads --size-on and --sizes, lowers `criteria` near the entities named
+/// (entity_sizes.h); returns the sizes asked. Throws InputError for a bad
+/// entity, size, grade or sizes file.
+std::vector<EntitySize> apply_size_options(const FemOptions& opt, const DomainOracle& oracle,
+                                           Criteria& criteria);
+
 struct FemResults {
+  std::vector<AchievedSize> sizes;  ///< per entity of --size-on / --sizes
+  double grade = 0;
   std::optional<SecondOrderStats> second_order;
   std::optional<PartitionStats> partitions;
 };
 
-/// Turns `mesh` into what the options ask for (second order, then partitions).
-FemResults apply_fem_options(const FemOptions& opt, TetMesh& mesh, const DomainOracle& oracle);
+/// Measures the sizes asked, then turns `mesh` into what the options ask for
+/// (second order, then partitions).
+FemResults apply_fem_options(const FemOptions& opt, const std::vector<EntitySize>& sizes,
+                             TetMesh& mesh, const DomainOracle& oracle);
 
-/// The report's "second_order" and "partitions" entries (null when not asked).
+/// The report's "entity_sizes", "second_order" and "partitions" entries (null when not asked).
 nlohmann::json fem_json(const FemResults& results);
 
 /// Summary lines (empty when no FEM option was used).

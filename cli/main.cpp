@@ -39,7 +39,8 @@ int run(const rdmesh::cli::Options& opt) {
   if (!opt.picture.path.empty()) (void)cli::picture_options(opt.picture, opt.input);
 
   cli::LoadedInput input = cli::load_input(opt);
-  const Criteria criteria = cli::resolve_criteria(opt, input);
+  Criteria criteria = cli::resolve_criteria(opt, input);
+  const std::vector<EntitySize> sizes = cli::apply_size_options(opt.fem, *input.oracle, criteria);
   const double seconds_load =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
@@ -71,7 +72,7 @@ int run(const rdmesh::cli::Options& opt) {
   t = std::chrono::steady_clock::now();
   cli::FemResults fem;
   if (!bad || opt.keep_bad_mesh) {
-    fem = cli::apply_fem_options(opt.fem, result.mesh, *input.oracle);
+    fem = cli::apply_fem_options(opt.fem, sizes, result.mesh, *input.oracle);
     write_mesh(result.mesh, opt.output);
     if (!opt.picture.path.empty()) cli::write_picture(result.mesh, opt.picture, opt.input);
   }

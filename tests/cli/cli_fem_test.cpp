@@ -111,5 +111,46 @@ TEST(CliFem, ImpossiblePartitionsAreInputErrorsBeforeMeshing) {
   }
 }
 
+TEST(CliFem, EntitySizesFromOptionsAndFileAreReported) {
+  ScratchDir dir;
+  const std::string sample = "'" + source_path("samples/capped_cylinder.json") + "'";
+  const CliRun base = run_cli(sample + " -q -o base.msh --report base.json", dir.path());
+  ASSERT_EQ(base.exit_code, 0) << base.output;
+  dir.write("sizes.json", R"({"curve:1": 0.03, "grade": 1.3})");
+  const CliRun run = run_cli(
+      sample + " -o s.msh --report r.json --size-on face:2=0.04 --sizes sizes.json", dir.path());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_NE(run.output.find("size on face:2: asked 0.04, edges mean "), std::string::npos)
+      << run.output;
+  const nlohmann::json r = nlohmann::json::parse(read_file(dir.file("r.json")));
+  const auto& sizes = r.at("entity_sizes");
+  ASSERT_EQ(sizes.size(), 2u);
+  EXPECT_EQ(sizes[0].at("entity"), "face:2");
+  EXPECT_EQ(sizes[1].at("entity"), "curve:1");
+  EXPECT_EQ(sizes[1].at("requested").get<double>(), 0.03);
+  EXPECT_LE(sizes[0].at("mean_edge").get<double>(), 2 * 0.04);
+  EXPECT_LE(sizes[1].at("max_edge").get<double>(), 2 * 0.03);
+  EXPECT_GT(r.at("tets").get<int>(),
+            nlohmann::json::parse(read_file(dir.file("base.json"))).at("tets").get<int>());
+  EXPECT_TRUE(nlohmann::json::parse(read_file(dir.file("base.json"))).at("entity_sizes").is_null());
+}
+
+TEST(CliFem, BadEntitySizesAreInputErrors) {
+  ScratchDir dir;
+  const std::string sample = "'" + source_path("samples/capped_cylinder.json") + "'";
+  dir.write("bad.json", R"({"face:1": "small"})");
+  dir.write("notjson.json", "{face");
+  for (const std::string args :
+       {"--size-on face:99=0.1", "--size-on face:1=-2", "--size-on wall:1=0.1",
+        "--size-on face:1=0.1 --grade 1", "--sizes bad.json", "--sizes notjson.json",
+        "--sizes missing.json"}) {
+    const CliRun run = run_cli(sample + " " + args + " -o out.msh", dir.path());
+    EXPECT_EQ(run.exit_code, 2) << args << ": " << run.output;
+    EXPECT_EQ(run.output.rfind("rdmesh: error: ", 0), 0u) << run.output;
+    EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << run.output;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("out.msh"))) << args;
+  }
+}
+
 }  // namespace
 }  // namespace rdmesh::test
