@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
@@ -35,6 +36,14 @@ inline std::string shared_data(const std::string& relative) {
   if (dir.empty()) return {};
   const std::filesystem::path p = std::filesystem::path(dir) / relative;
   return std::filesystem::exists(p) ? p.lexically_normal().string() : std::string();
+}
+
+/// A test name for a data file of a parameterized test: its name up to the
+/// first '.', other characters than letters and digits as '_'.
+inline std::string file_test_name(const std::string& file) {
+  std::string n = file.substr(0, file.find('.'));
+  for (char& ch : n) ch = std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
+  return n;
 }
 
 /// True when missing data must fail a test rather than skip it ($CI is set).

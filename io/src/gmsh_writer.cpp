@@ -185,6 +185,18 @@ void write_entities(std::ostream& out, const TetMesh& mesh, const Levels& levels
   out << "$EndEntities\n";
 }
 
+/// One "x y z" line, through the reused buffer `line`.
+void write_point(std::ostream& out, std::string& line, const Point3& p) {
+  line.clear();
+  append_double(line, p.x);
+  line += ' ';
+  append_double(line, p.y);
+  line += ' ';
+  append_double(line, p.z);
+  line += '\n';
+  out << line;
+}
+
 /// All nodes in one block, on the first volume entity (the first surface one
 /// for a surface-only mesh).
 void write_nodes(std::ostream& out, const TetMesh& mesh, const Levels& levels) {
@@ -207,16 +219,7 @@ void write_nodes(std::ostream& out, const TetMesh& mesh, const Levels& levels) {
     line += '\n';
     out << line;
   }
-  for (const Point3& p : mesh.vertices) {
-    line.clear();
-    append_double(line, p.x);
-    line += ' ';
-    append_double(line, p.y);
-    line += ' ';
-    append_double(line, p.z);
-    line += '\n';
-    out << line;
-  }
+  for (const Point3& p : mesh.vertices) write_point(out, line, p);
   out << "$EndNodes\n";
 }
 
@@ -374,17 +377,7 @@ void write_partitioned_nodes(std::ostream& out, const TetMesh& mesh,
       line += '\n';
       out << line;
     }
-    for (int v : nodes[i]) {
-      const Point3& p = mesh.vertices[v];
-      line.clear();
-      append_double(line, p.x);
-      line += ' ';
-      append_double(line, p.y);
-      line += ' ';
-      append_double(line, p.z);
-      line += '\n';
-      out << line;
-    }
+    for (int v : nodes[i]) write_point(out, line, mesh.vertices[v]);
   }
   out << "$EndNodes\n";
 }

@@ -62,12 +62,7 @@ TEST_P(PartitionCad, BalancedSmallCutGmshReadsIt) {
 INSTANTIATE_TEST_SUITE_P(Parts, PartitionCad,
                          ::testing::Values("cadquery_red_cube_blue_cylinder.step",
                                            "occtsample_MBBGehauseRohteil.step"),
-                         [](const auto& info) {
-                           std::string n = info.param;
-                           n = n.substr(0, n.find('.'));
-                           for (char& ch : n) ch = std::isalnum((unsigned char)ch) ? ch : '_';
-                           return n;
-                         });
+                         [](const auto& info) { return test::file_test_name(info.param); });
 
 }  // namespace
 }  // namespace rdmesh

@@ -91,12 +91,7 @@ INSTANTIATE_TEST_SUITE_P(Parts, SecondOrderCad,
                                            Part{"cadquery_red_cube_blue_cylinder.step", 0.05, 20},
                                            Part{"occt_screw.step", 0.025, 20},
                                            Part{"occtsample_MBBGehauseRohteil.step", 0.05, 20}),
-                         [](const auto& info) {
-                           std::string n = info.param.file;
-                           n = n.substr(0, n.find('.'));
-                           for (char& ch : n) ch = std::isalnum((unsigned char)ch) ? ch : '_';
-                           return n;
-                         });
+                         [](const auto& info) { return test::file_test_name(info.param.file); });
 
 }  // namespace
 }  // namespace rdmesh
