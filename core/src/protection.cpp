@@ -295,12 +295,22 @@ bool ProtectionPlanner::check_arcs() {
 }
 
 std::vector<int> ProtectionPlanner::curves_touching(const BallRef& ball) const {
-  if (ball.curve >= 0) return {ball.curve};
+  std::vector<int> corners;
   std::vector<int> out;
+  if (ball.curve < 0) {
+    corners.push_back(ball.corner);
+  } else {
+    out.push_back(ball.curve);
+    const CurveData& d = curves_[static_cast<std::size_t>(ball.curve)];
+    const int last = static_cast<int>(d.samples.size()) - 1;
+    if (!d.c.info.closed && ball.index <= 1) corners.push_back(d.start);
+    if (!d.c.info.closed && ball.index >= last - 1) corners.push_back(d.end);
+  }
   for (std::size_t j = 0; j < curves_.size(); ++j) {
-    if (curves_[j].start == ball.corner || curves_[j].end == ball.corner) {
-      out.push_back(static_cast<int>(j));
-    }
+    const bool at_corner = std::find_if(corners.begin(), corners.end(), [&](int c) {
+                             return c >= 0 && (curves_[j].start == c || curves_[j].end == c);
+                           }) != corners.end();
+    if (at_corner && static_cast<int>(j) != ball.curve) out.push_back(static_cast<int>(j));
   }
   return out;
 }

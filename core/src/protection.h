@@ -139,7 +139,10 @@ class ProtectionPlanner {
   /// unrelated ones overlapping where the surface bends) and plans again into `plan`;
   /// false (plan untouched) when none of them can shrink any more.
   bool shrink(const std::vector<BallRef>& balls, ProtectionPlan& plan);
-  /// The curves (indices) a ball protects: its own, or those ending at its corner.
+  /// The curves (indices) a ball protects: those ending at its corner, or its
+  /// own and, for the ball next to a corner of an open curve, those ending at
+  /// that corner (a feature the ball cannot be separated from there reaches
+  /// the corner's curves too: occt_bottle's thread ends).
   std::vector<int> curves_touching(const BallRef& ball) const;
 
  private:
