@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -49,6 +51,31 @@ TEST(CadBadFiles, EachFailsWithOneLineExitTwoAndNoOutput) {
     EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << run.output;
     EXPECT_EQ(scratch.entries(), 0u) << "an output or temporary file was left behind";
   }
+}
+
+TEST(CadBadFiles, AReaderThatLoopsIsStoppedWithinSecondsOnASmallFile) {
+  // One byte of gmsh_crack1.brep's shape section replaced (a campaign of
+  // fuzz/cli_campaign.py found it): OpenCASCADE's BRepTools_ShapeSet::
+  // ReadGeometry then loops on its failed stream. The isolated read's default
+  // limit follows the file's size (5 s plus 20 s per MB), not a fixed minute.
+  RDMESH_REQUIRE_SHARED_DATA(crack, "brep/gmsh_crack1.brep");
+  std::ifstream in(crack, std::ios::binary);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string line = "\n2  2 2 0 0 1\n";
+  const std::size_t at = text.find(line);
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, line.size(), "\n2  2 2 % 0 1\n");
+  const ScratchDir inputs, scratch;
+  const std::string mutant = inputs.write("mutant.brep", text);
+  const auto start = std::chrono::steady_clock::now();
+  const CliRun run = run_cli("'" + mutant + "' -o out.mesh -q", scratch.path());
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_NE(run.output.find("did not finish within 5 s"), std::string::npos) << run.output;
+  EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << run.output;
+  EXPECT_LT(seconds, 15.0);
+  EXPECT_EQ(scratch.entries(), 0u);
 }
 
 }  // namespace

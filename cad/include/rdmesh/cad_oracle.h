@@ -70,8 +70,9 @@ struct CadOptions {
   /// false: read in this process (no fork; no protection).
   bool isolate = true;
   /// Isolated reading: wall-clock seconds the child may take to read, sew,
-  /// heal and check the model (a CPU-time limit a little above it backs it up).
-  double read_time_limit = 60;
+  /// heal and check the model (a CPU-time limit a little above it backs it up);
+  /// 0: 5 s plus 20 s per MB of the file.
+  double read_time_limit = 0;
   /// Isolated reading: how much address space the child may add to what it
   /// inherits, MiB; 0 is half the physical memory. Not applied under
   /// AddressSanitizer, which reserves far more address space than it uses.
