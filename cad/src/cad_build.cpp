@@ -189,6 +189,12 @@ void collect_faces(CadOracle::Model& m, TopTools_IndexedMapOfShape& patch_faces)
     fp.surface = BRep_Tool::Surface(face);
     if (fp.surface.IsNull()) continue;
     BRepTools::UVBounds(face, fp.u0, fp.u1, fp.v0, fp.v1);
+    if (!std::isfinite(fp.u0) || !std::isfinite(fp.u1) || !std::isfinite(fp.v0) ||
+        !std::isfinite(fp.v1)) {
+      // A mutated STEP file (fuzz/): the tessellation's cut counts were NaN.
+      throw InputError("face " + std::to_string(m.faces.size() + 1) +
+                       " has a non-finite parameter range");
+    }
     fp.box = box_of(face, 0);
     if (GeomAdaptor_Surface(fp.surface).GetType() == GeomAbs_Plane) {
       // STEP files often give a planar face's edges no (u, v) curve: OpenCASCADE

@@ -87,7 +87,8 @@ std::vector<double> forced_cuts(const GeomAdaptor_Surface& s, bool u, double lo,
   for (std::size_t i = 0; i + 1 < breaks.size(); ++i) {
     const double a = breaks[i], b = breaks[i + 1];
     if (i > 0) cuts.push_back(a);
-    const int parts = std::max(1, static_cast<int>(std::ceil((b - a) / longest - 1e-9)));
+    const double n = std::ceil((b - a) / longest - 1e-9);  // NaN for a face of no width
+    const int parts = n >= 1 && n < 1e6 ? static_cast<int>(n) : 1;
     for (int k = 1; k < parts; ++k) cuts.push_back(a + (b - a) * k / parts);
   }
   return cuts;
