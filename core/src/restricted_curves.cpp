@@ -15,6 +15,7 @@
 #include <limits>
 
 #include "rdmesh/errors.h"
+#include "rdmesh/number_text.h"
 #include "refiner.h"
 #include "simplex_geometry.h"
 
@@ -50,8 +51,7 @@ void Refiner::insert_corners_and_curve_samples() {
   auto insert = [&](const Point3& p, FeatureDim dim, int feature, double t) {
     const Vertex_handle v = tr_.insert(to_weighted(p), hint);
     if (v->info().dim != FeatureDim::kVolume && v->info().dim != dim) {
-      throw OracleError("two features of the oracle share the point (" + std::to_string(p.x) +
-                        ", " + std::to_string(p.y) + ", " + std::to_string(p.z) + ")");
+      throw OracleError("two features of the oracle share the point " + point_text(p));
     }
     v->info().dim = dim;
     v->info().feature = feature;
@@ -139,9 +139,8 @@ void Refiner::insert_protecting_balls() {
       continue;
     }
     if (v == Vertex_handle() || v->info().dim != FeatureDim::kVolume) {
-      throw InternalError("protecting ball at (" + std::to_string(b.point.x) + ", " +
-                          std::to_string(b.point.y) + ", " + std::to_string(b.point.z) +
-                          ") is hidden by another or coincides with it");
+      throw InternalError("protecting ball at " + point_text(b.point) +
+                          " is hidden by another or coincides with it");
     }
     v->info().dim = b.dim;
     v->info().feature = b.feature;

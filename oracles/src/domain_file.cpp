@@ -13,6 +13,7 @@
 #include "rdmesh/errors.h"
 #include "rdmesh/expression.h"
 #include "rdmesh/implicit_oracle.h"
+#include "rdmesh/input_file.h"
 #include "rdmesh/parametric_curve.h"
 #include "rdmesh/polyline_curve.h"
 
@@ -385,11 +386,7 @@ LoadedDomain parse_domain_json(const std::string& text, const std::string& origi
 }
 
 LoadedDomain load_domain_file(const std::string& path) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError(path, "file not found");
-  if (std::filesystem::is_directory(path, ec)) {
-    throw InputError(path, "is a directory, not a domain file");
-  }
+  check_input_file(path);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, std::string("cannot open file: ") + std::strerror(errno));
   std::ostringstream text;

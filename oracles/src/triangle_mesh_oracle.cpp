@@ -8,6 +8,7 @@
 
 #include "rdmesh/detail/triangle_bvh.h"
 #include "rdmesh/errors.h"
+#include "rdmesh/number_text.h"
 #include "rdmesh/triangle_mesh_check.h"
 
 namespace rdmesh {
@@ -16,7 +17,7 @@ TriangleMeshOracle::TriangleMeshOracle(TriangleSoup soup, const std::string& fil
                                        TriangleMeshOptions options)
     : mesh_(std::move(soup)), options_(options), file_(file) {
   if (!(options_.feature_angle_degrees >= 0 && options_.feature_angle_degrees <= 180)) {
-    throw InputError(file, "feature angle " + std::to_string(options_.feature_angle_degrees) +
+    throw InputError(file, "feature angle " + short_number(options_.feature_angle_degrees) +
                                " is not in [0, 180] degrees");
   }
   validate_soup(mesh_, file);

@@ -10,6 +10,7 @@
 #include <unordered_map>
 
 #include "rdmesh/errors.h"
+#include "rdmesh/input_file.h"
 #include "rdmesh/triangle_mesh_io.h"
 #include "triangle_mesh_text.h"
 
@@ -235,6 +236,7 @@ TriangleSoup read_triangle_mesh(const std::string& path) {
     throw InputError(path, "unknown triangle mesh extension '" + ext +
                                "' (expected .off, .stl, .obj or .ply)");
   }
+  check_input_file(path);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, "cannot open the file");
   TriangleSoup soup = parse(in, path);

@@ -106,7 +106,7 @@ TEST(DomainFile, FileErrors) {
     load_domain_file(missing);
     ADD_FAILURE() << "no error";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()), missing + ": file not found");
+    EXPECT_EQ(std::string(e.what()), missing + ": no such file");
   }
   try {
     load_domain_file(kSamples);

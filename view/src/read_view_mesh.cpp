@@ -7,6 +7,7 @@
 
 #include "element_kinds.h"
 #include "rdmesh/errors.h"
+#include "rdmesh/input_file.h"
 #include "rdmesh/view_mesh.h"
 #include "text_scanner.h"
 
@@ -31,8 +32,7 @@ void check_elements(const std::vector<std::array<int, N>>& elements, std::size_t
 }
 
 std::string read_file(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw InputError(path, "is a directory");
+  check_input_file(path);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, "cannot open the file");
   std::ostringstream text;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "rdmesh/errors.h"
+#include "rdmesh/number_text.h"
 #include "tet_shape.h"
 #include "vertex_perturber.h"
 #include "weight_pump.h"
@@ -21,16 +22,16 @@ namespace {
 void validate(const ExudationOptions& o) {
   if (!(o.time_limit_seconds >= 0) || !std::isfinite(o.time_limit_seconds))
     throw InputError("exudation time limit must be >= 0 seconds (0 = none), got " +
-                     std::to_string(o.time_limit_seconds));
+                     short_number(o.time_limit_seconds));
   if (!(o.sliver_bound_deg > 0 && o.sliver_bound_deg <= 90))
     throw InputError("exudation sliver bound must be in (0, 90] degrees, got " +
-                     std::to_string(o.sliver_bound_deg));
+                     short_number(o.sliver_bound_deg));
   if (!(o.max_weight_ratio >= 0 && o.max_weight_ratio < 1))
     throw InputError("exudation weight ratio must be in [0, 1), got " +
-                     std::to_string(o.max_weight_ratio));
+                     short_number(o.max_weight_ratio));
   if (!(o.perturb_bound_deg > 0 && o.perturb_bound_deg <= 90))
     throw InputError("perturbation bound must be in (0, 90] degrees, got " +
-                     std::to_string(o.perturb_bound_deg));
+                     short_number(o.perturb_bound_deg));
   if (o.passes < 1)
     throw InputError("exudation passes must be >= 1, got " + std::to_string(o.passes));
   if (o.max_moves_per_vertex < 0)
