@@ -1,4 +1,4 @@
-// Gmsh MSH 4.1 ASCII writer.
+// Gmsh MSH 4.1 writer, ASCII or binary (msh_tokens.h).
 //
 // Layout: one elementary volume per subdomain, one elementary surface per
 // patch, one elementary curve per curve and one elementary point per corner,
@@ -10,36 +10,31 @@
 // curve by its start (+) and end (-) corner points.
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <limits>
 #include <map>
 #include <ostream>
 #include <string>
 
 #include "element_nodes.h"
+#include "element_nodes.h"
 #include "mesh_labels.h"
+#include "msh_tokens.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/mesh_writers.h"
+#include "rdmesh/second_order.h"
 #include "rdmesh/second_order.h"
 
 namespace rdmesh {
 namespace {
 
-using io_detail::append_double;
-using io_detail::append_int;
 using io_detail::Label;
 
-/// Physical name in double quotes; quotes inside the name become single quotes.
-std::string quoted_name(const Label& label, const char* fallback_prefix) {
-  std::string name = label.name.empty() ? fallback_prefix + std::to_string(label.id) : label.name;
-  std::replace(name.begin(), name.end(), '"', '\'');
-  std::replace(name.begin(), name.end(), '\n', ' ');
-  return '"' + name + '"';
-}
-
-/// "minX minY minZ maxX maxY maxZ" of the vertices of the given elements (zeros if none).
+/// The box of the vertices of the given elements (zeros if none).
 template <std::size_t N>
-std::string bounding_box(const TetMesh& mesh, const std::vector<std::array<int, N>>& elements,
-                         const std::vector<int>& which) {
+std::array<double, 6> bounding_box(const TetMesh& mesh,
+                                   const std::vector<std::array<int, N>>& elements,
+                                   const std::vector<int>& which) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   Point3 lo{kInf, kInf, kInf}, hi{-kInf, -kInf, -kInf};
   for (int e : which) {
@@ -50,12 +45,7 @@ std::string bounding_box(const TetMesh& mesh, const std::vector<std::array<int, 
     }
   }
   if (which.empty()) lo = hi = Point3{};
-  std::string s;
-  for (double c : {lo.x, lo.y, lo.z, hi.x, hi.y, hi.z}) {
-    append_double(s, c);
-    s += ' ';
-  }
-  return s;
+  return {lo.x, lo.y, lo.z, hi.x, hi.y, hi.z};
 }
 
 /// The labels and element groups of one dimension.
@@ -79,10 +69,9 @@ void write_physical_names(std::ostream& out, const Levels& levels) {
              levels[0].labels.size()
       << '\n';
   // Volumes and surfaces first: a mesh without features keeps its historical layout.
-  const char* prefixes[4] = {"corner_", "curve_", "patch_", "subdomain_"};
   for (int dim : {3, 2, 1, 0}) {
     for (const Label& l : levels[dim].labels) {
-      out << dim << ' ' << l.id << ' ' << quoted_name(l, prefixes[dim]) << '\n';
+      out << dim << ' ' << l.id << ' ' << io_detail::quoted_physical_name(l, dim) << '\n';
     }
   }
   out << "$EndPhysicalNames\n";
@@ -95,13 +84,17 @@ bool has_label(const std::vector<Label>& labels, int id) {
   return it != labels.end() && it->id == id;
 }
 
-/// "n t1 t2 ..." of the sorted, unique tags.
-std::string tag_list(std::vector<int> tags) {
+/// The sorted, unique tags.
+std::vector<int> sorted_tags(std::vector<int> tags) {
   std::sort(tags.begin(), tags.end());
   tags.erase(std::unique(tags.begin(), tags.end()), tags.end());
-  std::string s = std::to_string(tags.size());
-  for (int t : tags) s += ' ' + std::to_string(t);
-  return s;
+  return tags;
+}
+
+/// "n t1 t2 ...": a count, then the tags.
+void write_tags(io_detail::MshTokens& t, const std::vector<int>& tags) {
+  t.z(static_cast<long long>(tags.size()));
+  for (int tag : tags) t.i(tag);
 }
 
 /// Patches bounding subdomain `id` according to TetMesh::patches.
@@ -126,8 +119,8 @@ std::vector<int> bounding_curves(const TetMesh& mesh, int id, const std::vector<
   return tags;
 }
 
-/// "n start -end" for an open listed curve whose corners are point entities; "0" otherwise.
-std::string bounding_points(const TetMesh& mesh, int id, const std::vector<Label>& points) {
+/// Start (+) and end (-) corner of an open listed curve whose corners are point entities.
+std::vector<int> bounding_points(const TetMesh& mesh, int id, const std::vector<Label>& points) {
   auto info = std::find_if(mesh.curves.begin(), mesh.curves.end(),
                            [&](const CurveInfo& c) { return c.id.value == id; });
   std::vector<int> tags;
@@ -135,113 +128,121 @@ std::string bounding_points(const TetMesh& mesh, int id, const std::vector<Label
     if (has_label(points, info->start.value)) tags.push_back(info->start.value);
     if (has_label(points, info->end.value)) tags.push_back(-info->end.value);
   }
-  std::string s = std::to_string(tags.size());
-  for (int t : tags) s += ' ' + std::to_string(t);
-  return s;
+  return tags;
 }
 
-/// "x y z " of corner `id`: its mesh vertex, else its listed point, else the origin.
-std::string corner_position(const TetMesh& mesh, int id, const std::vector<int>& group) {
-  Point3 p;
-  if (!group.empty()) {
-    p = mesh.vertices[mesh.corner_vertices[group.front()]];
-  } else {
-    for (const CornerInfo& c : mesh.corners) {
-      if (c.id.value == id) p = c.point;
-    }
+/// Corner `id`: its mesh vertex, else its listed point, else the origin.
+Point3 corner_position(const TetMesh& mesh, int id, const std::vector<int>& group) {
+  if (!group.empty()) return mesh.vertices[mesh.corner_vertices[group.front()]];
+  for (const CornerInfo& c : mesh.corners) {
+    if (c.id.value == id) return c.point;
   }
-  std::string s;
-  for (double c : {p.x, p.y, p.z}) {
-    append_double(s, c);
-    s += ' ';
-  }
-  return s;
+  return {};
 }
 
-void write_entities(std::ostream& out, const TetMesh& mesh, const Levels& levels) {
+/// One entity: tag, position or box, its physical group (same tag), its boundary.
+void write_entity(io_detail::MshTokens& t, int id, const std::vector<double>& where,
+                  const std::vector<int>* boundary) {
+  t.i(id);
+  for (double c : where) t.d(c);
+  t.z(1);
+  t.i(id);
+  if (boundary) write_tags(t, *boundary);
+  t.end_line();
+}
+
+void write_entities(std::ostream& out, const TetMesh& mesh, const Levels& levels, bool binary) {
   const Level &points = levels[0], &curves = levels[1], &surfaces = levels[2], &volumes = levels[3];
-  out << "$Entities\n"
-      << points.labels.size() << ' ' << curves.labels.size() << ' ' << surfaces.labels.size() << ' '
-      << volumes.labels.size() << '\n';
+  out << "$Entities\n";
+  io_detail::MshTokens t(out, binary);
+  for (const Level* level : {&points, &curves, &surfaces, &volumes}) {
+    t.z(static_cast<long long>(level->labels.size()));
+  }
+  t.end_line();
   for (std::size_t k = 0; k < points.labels.size(); ++k) {
     const int id = points.labels[k].id;
-    out << id << ' ' << corner_position(mesh, id, points.groups[k]) << "1 " << id << '\n';
+    const Point3 p = corner_position(mesh, id, points.groups[k]);
+    write_entity(t, id, {p.x, p.y, p.z}, nullptr);
   }
+  const auto box = [](const std::array<double, 6>& b) {
+    return std::vector<double>(b.begin(), b.end());
+  };
   for (std::size_t k = 0; k < curves.labels.size(); ++k) {
     const int id = curves.labels[k].id;
-    out << id << ' ' << bounding_box(mesh, mesh.edges, curves.groups[k]) << "1 " << id << ' '
-        << bounding_points(mesh, id, points.labels) << '\n';
+    const std::vector<int> ends = bounding_points(mesh, id, points.labels);
+    write_entity(t, id, box(bounding_box(mesh, mesh.edges, curves.groups[k])), &ends);
   }
   for (std::size_t k = 0; k < surfaces.labels.size(); ++k) {
     const int id = surfaces.labels[k].id;
-    out << id << ' ' << bounding_box(mesh, mesh.triangles, surfaces.groups[k]) << "1 " << id << ' '
-        << tag_list(bounding_curves(mesh, id, curves.labels)) << '\n';
+    const std::vector<int> around = sorted_tags(bounding_curves(mesh, id, curves.labels));
+    write_entity(t, id, box(bounding_box(mesh, mesh.triangles, surfaces.groups[k])), &around);
   }
   for (std::size_t k = 0; k < volumes.labels.size(); ++k) {
     const int id = volumes.labels[k].id;
-    out << id << ' ' << bounding_box(mesh, mesh.tets, volumes.groups[k]) << "1 " << id << ' '
-        << tag_list(bounding_patches(mesh, id)) << '\n';
+    const std::vector<int> around = sorted_tags(bounding_patches(mesh, id));
+    write_entity(t, id, box(bounding_box(mesh, mesh.tets, volumes.groups[k])), &around);
   }
-  out << "$EndEntities\n";
+  t.flush();
+  out << (binary ? "\n" : "") << "$EndEntities\n";
 }
 
-/// One "x y z" line, through the reused buffer `line`.
-void write_point(std::ostream& out, std::string& line, const Point3& p) {
-  line.clear();
-  append_double(line, p.x);
-  line += ' ';
-  append_double(line, p.y);
-  line += ' ';
-  append_double(line, p.z);
-  line += '\n';
-  out << line;
+/// One node's "x y z" line.
+void write_point(io_detail::MshTokens& t, const Point3& p) {
+  t.d(p.x);
+  t.d(p.y);
+  t.d(p.z);
+  t.end_line();
 }
 
 /// All nodes in one block, on the first volume entity (the first surface one
 /// for a surface-only mesh).
-void write_nodes(std::ostream& out, const TetMesh& mesh, const Levels& levels) {
-  const std::size_t n = mesh.vertices.size();
+void write_nodes(std::ostream& out, const TetMesh& mesh, const Levels& levels, bool binary) {
+  const auto n = static_cast<long long>(mesh.vertices.size());
+  out << "$Nodes\n";
+  io_detail::MshTokens t(out, binary);
   if (n == 0) {
-    out << "$Nodes\n0 0 0 0\n$EndNodes\n";
-    return;
+    for (int k = 0; k < 4; ++k) t.z(0);
+    t.end_line();
+  } else {
+    const int dim = !levels[3].labels.empty() ? 3 : 2;
+    if (levels[dim].labels.empty()) {
+      throw InternalError(
+          "write_gmsh41: the mesh has vertices but no subdomain or patch to "
+          "classify them on");
+    }
+    for (long long v : {1LL, n, 1LL, n}) t.z(v);
+    t.end_line();
+    t.i(dim);
+    t.i(levels[dim].labels.front().id);
+    t.i(0);
+    t.z(n);
+    t.end_line();
+    for (long long i = 1; i <= n; ++i) {
+      t.z(i);
+      t.end_line();
+    }
+    for (const Point3& p : mesh.vertices) write_point(t, p);
   }
-  const int dim = !levels[3].labels.empty() ? 3 : 2;
-  if (levels[dim].labels.empty()) {
-    throw InternalError("write_gmsh41: the mesh has vertices but no subdomain or patch to "
-                        "classify them on");
-  }
-  out << "$Nodes\n1 " << n << " 1 " << n << '\n'
-      << dim << ' ' << levels[dim].labels.front().id << " 0 " << n << '\n';
-  std::string line;
-  for (std::size_t i = 1; i <= n; ++i) {
-    line.clear();
-    append_int(line, static_cast<long long>(i));
-    line += '\n';
-    out << line;
-  }
-  for (const Point3& p : mesh.vertices) write_point(out, line, p);
-  out << "$EndNodes\n";
+  t.flush();
+  out << (binary ? "\n" : "") << "$EndNodes\n";
 }
 
 /// One element block per non-empty group; `next_tag` is the running 1-based element tag.
 template <std::size_t N>
-void write_element_blocks(std::ostream& out, int dim, int gmsh_type,
+void write_element_blocks(io_detail::MshTokens& t, int dim, int gmsh_type,
                           const std::vector<std::array<int, N>>& elements, const Level& level,
                           long long& next_tag) {
-  std::string line;
   for (std::size_t k = 0; k < level.labels.size(); ++k) {
     if (level.groups[k].empty()) continue;
-    out << dim << ' ' << level.labels[k].id << ' ' << gmsh_type << ' ' << level.groups[k].size()
-        << '\n';
+    t.i(dim);
+    t.i(level.labels[k].id);
+    t.i(gmsh_type);
+    t.z(static_cast<long long>(level.groups[k].size()));
+    t.end_line();
     for (int e : level.groups[k]) {
-      line.clear();
-      append_int(line, next_tag++);
-      for (int v : elements[e]) {
-        line += ' ';
-        append_int(line, v + 1);
-      }
-      line += '\n';
-      out << line;
+      t.z(next_tag++);
+      for (int v : elements[e]) t.z(v + 1);
+      t.end_line();
     }
   }
 }
@@ -253,31 +254,38 @@ std::size_t count_non_empty(const std::vector<std::vector<int>>& groups) {
 
 /// $Elements: one block per non-empty group of `levels` (model entities, or
 /// partitioned entities with their tags as labels).
-void write_elements(std::ostream& out, const TetMesh& mesh, const Levels& levels) {
+void write_elements(std::ostream& out, const TetMesh& mesh, const Levels& levels, bool binary) {
   std::vector<std::array<int, 1>> corner_elements;
   corner_elements.reserve(mesh.corner_vertices.size());
   for (int v : mesh.corner_vertices) corner_elements.push_back({v});
-  const std::size_t num_elements =
-      mesh.tets.size() + mesh.triangles.size() + mesh.edges.size() + corner_elements.size();
+  const auto num_elements = static_cast<long long>(mesh.tets.size() + mesh.triangles.size() +
+                                                   mesh.edges.size() + corner_elements.size());
   std::size_t num_blocks = 0;
   for (const Level& level : levels) num_blocks += count_non_empty(level.groups);
-  out << "$Elements\n"
-      << num_blocks << ' ' << num_elements << ' ' << (num_elements ? 1 : 0) << ' ' << num_elements
-      << '\n';
-  long long next_tag = 1;
-  // Tets and triangles first: a mesh without features keeps its element tags.
-  if (is_second_order(mesh)) {  // 10-node tets, 6-node triangles, 3-node lines
-    write_element_blocks(out, 3, 11, io_detail::tet10_elements(mesh, io_detail::Tet10Order::kGmsh),
-                         levels[3], next_tag);
-    write_element_blocks(out, 2, 9, io_detail::triangle6_elements(mesh), levels[2], next_tag);
-    write_element_blocks(out, 1, 8, io_detail::line3_elements(mesh), levels[1], next_tag);
-  } else {
-    write_element_blocks(out, 3, 4, mesh.tets, levels[3], next_tag);
-    write_element_blocks(out, 2, 2, mesh.triangles, levels[2], next_tag);
-    write_element_blocks(out, 1, 1, mesh.edges, levels[1], next_tag);
+  out << "$Elements\n";
+  {
+    io_detail::MshTokens t(out, binary);
+    t.z(static_cast<long long>(num_blocks));
+    t.z(num_elements);
+    t.z(num_elements ? 1 : 0);
+    t.z(num_elements);
+    t.end_line();
+    long long next_tag = 1;
+    // Tets and triangles first: a mesh without features keeps its element tags.
+    if (is_second_order(mesh)) {  // 10-node tets, 6-node triangles, 3-node lines
+      write_element_blocks(t, 3, 11,
+                           io_detail::tet10_elements(mesh, io_detail::Tet10Order::kGmsh),
+                           levels[3], next_tag);
+      write_element_blocks(t, 2, 9, io_detail::triangle6_elements(mesh), levels[2], next_tag);
+      write_element_blocks(t, 1, 8, io_detail::line3_elements(mesh), levels[1], next_tag);
+    } else {
+      write_element_blocks(t, 3, 4, mesh.tets, levels[3], next_tag);
+      write_element_blocks(t, 2, 2, mesh.triangles, levels[2], next_tag);
+      write_element_blocks(t, 1, 1, mesh.edges, levels[1], next_tag);
+    }
+    write_element_blocks(t, 0, 15, corner_elements, levels[0], next_tag);
   }
-  write_element_blocks(out, 0, 15, corner_elements, levels[0], next_tag);
-  out << "$EndElements\n";
+  out << (binary ? "\n" : "") << "$EndElements\n";
 }
 
 // --- Partitioned meshes (TetMesh::tet_partition): Gmsh's partitioned entities ---
@@ -310,38 +318,51 @@ std::array<std::vector<PartEntity>, 4> partitioned_entities(const TetMesh& mesh,
 }
 
 void write_partitioned_entities(std::ostream& out, const TetMesh& mesh,
-                                const std::array<std::vector<PartEntity>, 4>& parts) {
+                                const std::array<std::vector<PartEntity>, 4>& parts, bool binary) {
   const int num_partitions =
       *std::max_element(mesh.tet_partition.begin(), mesh.tet_partition.end());
-  out << "$PartitionedEntities\n"
-      << num_partitions << "\n0\n"
-      << parts[0].size() << ' ' << parts[1].size() << ' ' << parts[2].size() << ' '
-      << parts[3].size() << '\n';
+  out << "$PartitionedEntities\n";
+  io_detail::MshTokens t(out, binary);
+  t.z(num_partitions);
+  t.end_line();
+  t.z(0);  // no ghost entities
+  t.end_line();
+  for (int dim = 0; dim < 4; ++dim) t.z(static_cast<long long>(parts[dim].size()));
+  t.end_line();
+  const auto box = [](const std::array<double, 6>& b) { return std::vector<double>(b.begin(), b.end()); };
   for (int dim = 0; dim < 4; ++dim) {
     for (const PartEntity& e : parts[dim]) {
-      out << e.tag << ' ' << dim << ' ' << e.parent << " 1 " << e.partition << ' ';
-      switch (dim) {
-        case 0:
-          out << corner_position(mesh, e.parent, e.elements) << "1 " << e.parent << '\n';
-          break;
-        case 1:
-          out << bounding_box(mesh, mesh.edges, e.elements) << "1 " << e.parent << " 0\n";
-          break;
-        case 2:
-          out << bounding_box(mesh, mesh.triangles, e.elements) << "1 " << e.parent << " 0\n";
-          break;
-        default:
-          out << bounding_box(mesh, mesh.tets, e.elements) << "1 " << e.parent << " 0\n";
+      t.i(e.tag);
+      t.i(dim);
+      t.i(e.parent);
+      t.z(1);
+      t.i(e.partition);
+      std::vector<double> where;
+      if (dim == 0) {
+        const Point3 p = corner_position(mesh, e.parent, e.elements);
+        where = {p.x, p.y, p.z};
+      } else if (dim == 1) {
+        where = box(bounding_box(mesh, mesh.edges, e.elements));
+      } else if (dim == 2) {
+        where = box(bounding_box(mesh, mesh.triangles, e.elements));
+      } else {
+        where = box(bounding_box(mesh, mesh.tets, e.elements));
       }
+      for (double c : where) t.d(c);
+      t.z(1);
+      t.i(e.parent);
+      if (dim > 0) t.z(0);  // no bounding entities
+      t.end_line();
     }
   }
-  out << "$EndPartitionedEntities\n";
+  t.flush();
+  out << (binary ? "\n" : "") << "$EndPartitionedEntities\n";
 }
 
 /// Each node in one block: the partitioned volume of the tetrahedron with the
 /// smallest partition (then the smallest index) among those using it.
 void write_partitioned_nodes(std::ostream& out, const TetMesh& mesh,
-                             const std::vector<PartEntity>& volumes) {
+                             const std::vector<PartEntity>& volumes, bool binary) {
   std::vector<int> owner(mesh.vertices.size(), -1);  // a tetrahedron
   auto claim = [&](int v, int t) {
     if (owner[v] < 0 || mesh.tet_partition[t] < mesh.tet_partition[owner[v]]) owner[v] = t;
@@ -365,21 +386,26 @@ void write_partitioned_nodes(std::ostream& out, const TetMesh& mesh,
     nodes[entity_of.at({mesh.tet_subdomain[t].value, mesh.tet_partition[t]})].push_back(
         static_cast<int>(v));
   }
-  const std::size_t n = mesh.vertices.size();
-  out << "$Nodes\n" << count_non_empty(nodes) << ' ' << n << " 1 " << n << '\n';
-  std::string line;
+  const auto n = static_cast<long long>(mesh.vertices.size());
+  out << "$Nodes\n";
+  io_detail::MshTokens t(out, binary);
+  for (long long v : {static_cast<long long>(count_non_empty(nodes)), n, 1LL, n}) t.z(v);
+  t.end_line();
   for (std::size_t i = 0; i < volumes.size(); ++i) {
     if (nodes[i].empty()) continue;
-    out << "3 " << volumes[i].tag << " 0 " << nodes[i].size() << '\n';
+    t.i(3);
+    t.i(volumes[i].tag);
+    t.i(0);
+    t.z(static_cast<long long>(nodes[i].size()));
+    t.end_line();
     for (int v : nodes[i]) {
-      line.clear();
-      append_int(line, v + 1);
-      line += '\n';
-      out << line;
+      t.z(v + 1);
+      t.end_line();
     }
-    for (int v : nodes[i]) write_point(out, line, mesh.vertices[v]);
+    for (int v : nodes[i]) write_point(t, mesh.vertices[v]);
   }
-  out << "$EndNodes\n";
+  t.flush();
+  out << (binary ? "\n" : "") << "$EndNodes\n";
 }
 
 /// The partitioned entities of one dimension as a Level (tags as labels).
@@ -392,9 +418,7 @@ Level partitioned_level(const std::vector<PartEntity>& entities) {
   return level;
 }
 
-}  // namespace
-
-void write_gmsh41(const TetMesh& mesh, std::ostream& out) {
+void write_msh41(const TetMesh& mesh, std::ostream& out, bool binary) {
   io_detail::check_mesh(mesh);
   const Levels levels{
       make_level(io_detail::corner_labels(mesh), io_detail::corner_label_values(mesh)),
@@ -402,21 +426,35 @@ void write_gmsh41(const TetMesh& mesh, std::ostream& out) {
       make_level(io_detail::patch_labels(mesh), io_detail::triangle_label_values(mesh)),
       make_level(io_detail::subdomain_labels(mesh), io_detail::tet_label_values(mesh))};
 
-  out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
+  if (binary) {
+    const std::int32_t one = 1;  // tells the reader the byte order
+    out << "$MeshFormat\n4.1 1 8\n";
+    out.write(reinterpret_cast<const char*>(&one), sizeof one);
+    out << "\n$EndMeshFormat\n";
+  } else {
+    out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
+  }
   write_physical_names(out, levels);
-  write_entities(out, mesh, levels);
+  write_entities(out, mesh, levels, binary);
   if (!mesh.tet_partition.empty()) {
     const auto parts = partitioned_entities(mesh, levels);
-    write_partitioned_entities(out, mesh, parts);
-    write_partitioned_nodes(out, mesh, parts[3]);
+    write_partitioned_entities(out, mesh, parts, binary);
+    write_partitioned_nodes(out, mesh, parts[3], binary);
     write_elements(out, mesh,
                    Levels{partitioned_level(parts[0]), partitioned_level(parts[1]),
-                          partitioned_level(parts[2]), partitioned_level(parts[3])});
+                          partitioned_level(parts[2]), partitioned_level(parts[3])},
+                   binary);
   } else {
-    write_nodes(out, mesh, levels);
-    write_elements(out, mesh, levels);
+    write_nodes(out, mesh, levels, binary);
+    write_elements(out, mesh, levels, binary);
   }
   if (!out) throw OutputError("write_gmsh41: the output stream failed");
 }
+
+}  // namespace
+
+void write_gmsh41(const TetMesh& mesh, std::ostream& out) { write_msh41(mesh, out, false); }
+
+void write_gmsh41_binary(const TetMesh& mesh, std::ostream& out) { write_msh41(mesh, out, true); }
 
 }  // namespace rdmesh

@@ -52,18 +52,36 @@ std::vector<int> triangle_label_values(const TetMesh& mesh);
 std::vector<int> edge_label_values(const TetMesh& mesh);
 std::vector<int> corner_label_values(const TetMesh& mesh);
 
+/// The name written for a label of dimension `dim` (3 subdomain ... 0 corner): its
+/// own, else "subdomain_<id>", "patch_<id>", "curve_<id>" or "corner_<id>".
+inline std::string physical_name(const Label& label, int dim) {
+  static const char* const kPrefixes[4] = {"corner_", "curve_", "patch_", "subdomain_"};
+  return label.name.empty() ? kPrefixes[dim] + std::to_string(label.id) : label.name;
+}
+
+/// physical_name() in double quotes, as Gmsh's $PhysicalNames wants it: quotes
+/// inside become single quotes, newlines spaces.
+inline std::string quoted_physical_name(const Label& label, int dim) {
+  std::string name = physical_name(label, dim);
+  for (char& c : name) {
+    if (c == '"') c = '\'';
+    if (c == '\n') c = ' ';
+  }
+  return '"' + name + '"';
+}
+
 /// Appends `v` in the shortest form that reads back to the same double.
 inline void append_double(std::string& s, double v) {
   char buf[32];
   auto res = std::to_chars(buf, buf + sizeof buf, v);
-  s.append(buf, res.ptr);
+  s.append(buf, static_cast<std::size_t>(res.ptr - buf));
 }
 
 /// Appends an integer in decimal.
 inline void append_int(std::string& s, long long v) {
   char buf[24];
   auto res = std::to_chars(buf, buf + sizeof buf, v);
-  s.append(buf, res.ptr);
+  s.append(buf, static_cast<std::size_t>(res.ptr - buf));
 }
 
 }  // namespace rdmesh::io_detail

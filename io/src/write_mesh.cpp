@@ -14,19 +14,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-void write_by_format(const TetMesh& mesh, MeshFormat format, std::ostream& out) {
-  switch (format) {
-    case MeshFormat::Medit:
-      write_medit(mesh, out);
-      return;
-    case MeshFormat::Gmsh41:
-      write_gmsh41(mesh, out);
-      return;
-    case MeshFormat::Vtu:
-      write_vtu(mesh, out);
-      return;
-  }
-  throw InternalError("write_mesh: unhandled MeshFormat");
+std::size_t element_count(const TetMesh& mesh) {
+  return mesh.tets.size() + mesh.triangles.size() + mesh.edges.size() + mesh.corner_vertices.size();
 }
 
 }  // namespace
@@ -41,9 +30,41 @@ MeshFormat format_from_path(const std::string& path) {
   throw InputError(path, "unknown output extension '" + ext + "' (expected .mesh, .msh or .vtu)");
 }
 
-void write_mesh(const TetMesh& mesh, const std::string& path) {
+bool writes_binary(const TetMesh& mesh, MeshFormat format, const WriteOptions& options) {
+  if (options.msh22 && format != MeshFormat::Gmsh41 && format != MeshFormat::Gmsh22) {
+    throw InputError("MSH 2.2 is a .msh format; the output is not .msh");
+  }
+  const bool text_only =
+      format == MeshFormat::Medit || format == MeshFormat::Gmsh22 || options.msh22;
+  if (options.encoding == Encoding::binary && text_only) {
+    throw InputError(std::string(format == MeshFormat::Medit ? "Medit .mesh" : "MSH 2.2") +
+                     " is written as text only (binary: .msh 4.1 or .vtu)");
+  }
+  if (text_only || options.encoding == Encoding::ascii) return false;
+  return options.encoding == Encoding::binary || element_count(mesh) > kBinaryAboveElements;
+}
+
+void write_mesh(const TetMesh& mesh, const std::string& path, const WriteOptions& options) {
   const MeshFormat format = format_from_path(path);
-  write_file_atomically(path, [&](std::ostream& out) { write_by_format(mesh, format, out); });
+  bool binary = false;
+  try {
+    binary = writes_binary(mesh, format, options);
+  } catch (const InputError& e) {
+    throw InputError(path, e.what());
+  }
+  write_file_atomically(path, [&](std::ostream& out) {
+    switch (format) {
+      case MeshFormat::Medit:
+        return write_medit(mesh, out);
+      case MeshFormat::Gmsh41:
+      case MeshFormat::Gmsh22:
+        if (options.msh22 || format == MeshFormat::Gmsh22) return write_gmsh22(mesh, out);
+        return binary ? write_gmsh41_binary(mesh, out) : write_gmsh41(mesh, out);
+      case MeshFormat::Vtu:
+        return binary ? write_vtu_binary(mesh, out) : write_vtu(mesh, out);
+    }
+    throw InternalError("write_mesh: unhandled MeshFormat");
+  });
 }
 
 }  // namespace rdmesh

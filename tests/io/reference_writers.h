@@ -1,6 +1,7 @@
 // The writers' output for a mesh WITHOUT sharp features, rebuilt independently
 // from the mesh: the layout the writers produced before the 1D/0D levels
-// existed, which they must keep producing for such meshes. Assumes every
+// existed, which they must keep producing for such meshes (the .vtu has since
+// gained the names as field data). Assumes every
 // subdomain and patch id used by an element is listed in the TetMesh, sorted.
 #pragma once
 
@@ -150,11 +151,28 @@ inline std::string reference_vtu(const TetMesh& m) {
     subdomain.push_back(0);
     patch.push_back(m.triangle_patch[f].value);
   }
+  // The names as field data: "<name>" -> id and dimension, each name once.
+  std::string names;
+  std::vector<std::string> seen;
+  auto field = [&](const std::string& name, int id, int dim) {
+    if (std::find(seen.begin(), seen.end(), name) != seen.end()) return;
+    seen.push_back(name);
+    names += "      <DataArray type=\"Int32\" Name=\"" + name +
+             "\" NumberOfTuples=\"1\" format=\"ascii\">" + std::to_string(id) + ' ' +
+             std::to_string(dim) + "</DataArray>\n";
+  };
+  for (const SubdomainInfo& d : m.subdomains) {
+    field(d.name.empty() ? "subdomain_" + std::to_string(d.id.value) : d.name, d.id.value, 3);
+  }
+  for (const PatchInfo& p : m.patches) {
+    field(p.name.empty() ? "patch_" + std::to_string(p.id.value) : p.name, p.id.value, 2);
+  }
+  if (!names.empty()) names = "    <FieldData>\n" + names + "    </FieldData>\n";
   return "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
-         "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n  <UnstructuredGrid>\n"
-         "    <Piece NumberOfPoints=\"" +
-         std::to_string(m.vertices.size()) + "\" NumberOfCells=\"" + std::to_string(nt + nf) +
-         "\">\n      <Points>\n" + array("Float64", "Points", points, " NumberOfComponents=\"3\"") +
+         "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n  <UnstructuredGrid>\n" +
+         names + "    <Piece NumberOfPoints=\"" + std::to_string(m.vertices.size()) +
+         "\" NumberOfCells=\"" + std::to_string(nt + nf) + "\">\n      <Points>\n" +
+         array("Float64", "Points", points, " NumberOfComponents=\"3\"") +
          "      </Points>\n      <Cells>\n" +
          array("Int64", "connectivity", rows(connectivity, 12)) +
          array("Int64", "offsets", rows(offsets, 12)) + array("UInt8", "types", rows(types, 24)) +

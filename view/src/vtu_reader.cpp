@@ -183,6 +183,13 @@ class VtuReader {
       } else if (tag.name == "Piece" && !tag.closing) {
         pieces_.push_back(
             {count_attribute(tag, "NumberOfPoints"), count_attribute(tag, "NumberOfCells"), {}});
+      } else if (tag.name == "DataArray" && !tag.closing && section == "FieldData") {
+        // Field data (names of the labels, say) carries nothing to draw: skipped.
+        if (!tag.self_closing) {
+          const std::size_t close = text_.find("</DataArray", pos);
+          if (close == std::string_view::npos) fail("unterminated DataArray in FieldData");
+          pos = close;
+        }
       } else if (tag.name == "DataArray" && !tag.closing) {
         add_array(tag, pos, section);
       } else if (tag.name == "AppendedData" && !tag.closing) {

@@ -1,12 +1,13 @@
-// Writers for the labelled output mesh: Medit (.mesh), Gmsh 4.1 ASCII (.msh)
-// and VTK XML unstructured grid (.vtu).
+// Writers for the labelled output mesh: Medit (.mesh), Gmsh 4.1 ASCII or binary
+// and 2.2 ASCII (.msh) and VTK XML unstructured grid, ASCII or compressed (.vtu).
 //
 // Every writer emits the same information (DESIGN.md, "Contracts"):
 //   - the vertices at full double precision (shortest round-trip form),
 //   - each tetrahedron with its subdomain id,
 //   - each boundary/interface triangle exactly once, with its patch id,
 //   - each feature edge with its curve id, each corner vertex with its corner id,
-//   - the subdomain, patch and curve names where the format can carry them (Gmsh).
+//   - the subdomain, patch and curve names where the format can carry them (Gmsh,
+//     VTK field data).
 // A second-order mesh (rdmesh/second_order.h) is written with quadratic
 // elements instead: Gmsh types 11, 9, 8; VTK types 24, 22, 21; Medit
 // TetrahedraP2, TrianglesP2, EdgesP2 (node orders in io/src/element_nodes.h).
@@ -17,6 +18,7 @@
 // same files as before the 1D/0D levels existed.
 #pragma once
 
+#include <cstddef>
 #include <iosfwd>
 #include <string>
 
@@ -27,8 +29,26 @@ namespace rdmesh {
 /// Output formats chosen by file extension.
 enum class MeshFormat {
   Medit,   ///< `.mesh`, MeshVersionFormatted 2
-  Gmsh41,  ///< `.msh`, Gmsh MSH 4.1 ASCII
-  Vtu,     ///< `.vtu`, VTK XML UnstructuredGrid (ASCII data arrays)
+  Gmsh41,  ///< `.msh`, Gmsh MSH 4.1 (ASCII or binary)
+  Vtu,     ///< `.vtu`, VTK XML UnstructuredGrid (ASCII or zlib-compressed binary arrays)
+  Gmsh22,  ///< `.msh` when asked (WriteOptions::msh22), Gmsh MSH 2.2 ASCII
+};
+
+/// How write_mesh encodes the file.
+enum class Encoding {
+  automatic,  ///< binary above kBinaryAboveElements elements (.msh 4.1, .vtu), else ASCII
+  ascii,
+  binary,  ///< .msh 4.1 and .vtu only
+};
+
+/// Meshes with more elements (tetrahedra + triangles + edges + corners) than this
+/// are written binary unless ASCII is asked: about 100 MB of text.
+inline constexpr std::size_t kBinaryAboveElements = 1000000;
+
+struct WriteOptions {
+  Encoding encoding = Encoding::automatic;
+  /// `.msh` as MSH 2.2 (ASCII) for older solvers, instead of 4.1.
+  bool msh22 = false;
 };
 
 /// The format matching the extension of `path` (`.mesh`, `.msh`, `.vtu`,
@@ -58,6 +78,15 @@ void write_medit(const TetMesh& mesh, std::ostream& out);
 /// type 1 lines, type 15 points, in that order). Node and element tags are 1-based.
 /// @throws InternalError if `mesh` is inconsistent; OutputError if the stream fails.
 void write_gmsh41(const TetMesh& mesh, std::ostream& out);
+/// The same in MSH 4.1 binary ("4.1 1 8"): the $Entities, $Nodes and $Elements
+/// data as Gmsh's binary layout (int 4 bytes, size_t 8, double 8).
+void write_gmsh41_binary(const TetMesh& mesh, std::ostream& out);
+
+/// Gmsh MSH 2.2 ASCII, for older solvers: $PhysicalNames as in 4.1, all nodes,
+/// then the elements (tetrahedra, triangles, lines, points, as in 4.1) each with
+/// two tags, its physical group and its elementary entity (the same id).
+/// @throws InternalError if `mesh` is inconsistent; OutputError if the stream fails.
+void write_gmsh22(const TetMesh& mesh, std::ostream& out);
 
 /// VTK XML `.vtu` with tetrahedra (VTK type 10), then triangles (type 5), then
 /// feature edges (type 3, VTK_LINE) and corner vertices (type 1, VTK_VERTEX) in
@@ -67,6 +96,11 @@ void write_gmsh41(const TetMesh& mesh, std::ostream& out);
 /// Indices are 0-based as VTK requires.
 /// @throws InternalError if `mesh` is inconsistent; OutputError if the stream fails.
 void write_vtu(const TetMesh& mesh, std::ostream& out);
+/// The same with binary arrays, zlib-compressed and base64-encoded inline
+/// (compressor="vtkZLibDataCompressor", as VTK writes them). Both carry the
+/// names of subdomains, patches and curves as field data: one Int32 array per
+/// name, its id and dimension (meshio's field_data).
+void write_vtu_binary(const TetMesh& mesh, std::ostream& out);
 
 /// Writes `mesh` to `path` in the format given by its extension.
 /// The data goes to a fresh temporary file `path.tmp-XXXXXX` in the same
@@ -76,6 +110,11 @@ void write_vtu(const TetMesh& mesh, std::ostream& out);
 ///         OutputError("path: problem") when the file cannot be created,
 ///         written or renamed (e.g. missing or read-only directory);
 ///         InternalError if `mesh` is inconsistent (the temporary file is removed).
-void write_mesh(const TetMesh& mesh, const std::string& path);
+void write_mesh(const TetMesh& mesh, const std::string& path, const WriteOptions& options = {});
+
+/// Whether write_mesh writes `mesh` to a file of `format` in binary.
+/// @throws InputError when `options` ask what the format cannot do (binary Medit
+///         or MSH 2.2, MSH 2.2 in another format).
+bool writes_binary(const TetMesh& mesh, MeshFormat format, const WriteOptions& options);
 
 }  // namespace rdmesh
