@@ -15,6 +15,7 @@
 #include <Geom_BSplineCurve.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopTools_DataMapOfShapeInteger.hxx>
 #include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
@@ -84,6 +85,7 @@ void fuse_solids(const ReadShape& read, CadOracle::Model& m, const std::string& 
   if (input.size() == 1) {
     m.pieces.push_back({input[0], SubdomainId(1), {}});
     m.shape = input[0];
+    m.face_styles = read.face_styles;
     return;
   }
   BOPAlgo_Builder builder;
@@ -96,6 +98,12 @@ void fuse_solids(const ReadShape& read, CadOracle::Model& m, const std::string& 
   if (builder.HasErrors()) {
     throw InputError(source, "the general fuse of the " + std::to_string(input.size()) +
                                  " solids failed (BOPAlgo_Builder); try --heal");
+  }
+  // Names and colours follow the faces the fuse split or kept.
+  for (const auto& [face, style] : read.face_styles) {
+    const TopTools_ListOfShape& images = builder.Modified(face);
+    if (images.IsEmpty() && !builder.IsDeleted(face)) m.face_styles.emplace_back(face, style);
+    for (const TopoDS_Shape& image : images) m.face_styles.emplace_back(image, style);
   }
   TopTools_IndexedMapOfShape taken;
   for (std::size_t i = 0; i < input.size(); ++i) {
@@ -156,6 +164,34 @@ void set_kind(FacePatch& f) {
     default:
       f.kind = SurfaceKind::parametric;
       break;
+  }
+}
+
+/// Patch names: the file's face name, else "face_<id>"; a name several faces
+/// share gets "_<id>" appended. Colours as the file gives them.
+void name_patches(CadOracle::Model& m) {
+  TopTools_DataMapOfShapeInteger style_of;
+  for (std::size_t k = 0; k < m.face_styles.size(); ++k) {
+    style_of.Bind(m.face_styles[k].first, static_cast<int>(k));
+  }
+  std::map<std::string, int> uses;
+  std::vector<std::string> names(m.faces.size());
+  m.patch_colors.assign(m.faces.size(), std::string());
+  for (std::size_t i = 0; i < m.faces.size(); ++i) {
+    if (!style_of.IsBound(m.faces[i].face)) continue;
+    const ShapeStyle& style =
+        m.face_styles[static_cast<std::size_t>(style_of(m.faces[i].face))].second;
+    names[i] = style.name;
+    m.patch_colors[i] = style.color;
+    if (!names[i].empty()) ++uses[names[i]];
+  }
+  // One name on every face (often the body's, "PartBody") names no face.
+  const bool one_name = uses.size() == 1 && m.faces.size() > 1 &&
+                        uses.begin()->second == static_cast<int>(m.faces.size());
+  for (std::size_t i = 0; i < m.faces.size(); ++i) {
+    const std::string id = std::to_string(i + 1);
+    if (names[i].empty() || one_name) continue;
+    m.patches[i].name = uses[names[i]] > 1 ? names[i] + "_" + id : names[i];
   }
 }
 
@@ -315,6 +351,7 @@ std::unique_ptr<CadOracle::Model> build_model(ReadShape read, const std::string&
     for (SolidPiece& p : m->pieces) p.box = box_of(p.solid, m->tolerance);
     TopTools_IndexedMapOfShape patch_faces;
     collect_faces(*m, patch_faces);
+    name_patches(*m);
     for (FacePatch& f : m->faces) {
       f.box.lo = f.box.lo - Point3{m->tolerance, m->tolerance, m->tolerance};
       f.box.hi = f.box.hi + Point3{m->tolerance, m->tolerance, m->tolerance};

@@ -30,10 +30,18 @@ class StepData_StepModel;
 
 namespace rdmesh::cad {
 
-/// A shape as read from a file, with the names the file gives its solids.
+/// What a file says about a face: its name and colour ("#rrggbb"), each may be empty.
+struct ShapeStyle {
+  std::string name;
+  std::string color;
+};
+
+/// A shape as read from a file, with the names the file gives its solids and
+/// the names and colours it gives its faces.
 struct ReadShape {
   TopoDS_Shape shape;
   std::vector<std::pair<TopoDS_Shape, std::string>> solid_names;
+  std::vector<std::pair<TopoDS_Shape, ShapeStyle>> face_styles;
   std::vector<std::string> log;
 };
 
@@ -185,6 +193,9 @@ struct CadOracle::Model {
   TriangleBvh candidate_tree;
   cad::OccupancyGrid occupied;  ///< the grid cells the candidates' boxes meet
   std::vector<PatchInfo> patches;
+  /// The file's face names and colours, carried to the faces after the fuse.
+  std::vector<std::pair<TopoDS_Shape, cad::ShapeStyle>> face_styles;
+  std::vector<std::string> patch_colors;   // index = patch id - 1; "#rrggbb" or ""
   std::vector<std::vector<Point3>> seeds;  // index = patch id - 1
   std::vector<CurveInfo> curve_infos;
   std::vector<std::unique_ptr<cad::EdgeCurve>> curves;

@@ -137,6 +137,11 @@ int CadOracle::input_solids() const { return model_->input_solids; }
 const std::vector<std::string>& CadOracle::log() const { return model_->log; }
 const std::vector<std::string>& CadOracle::warnings() const { return model_->warnings; }
 
+std::string CadOracle::patch_color(PatchId id) const {
+  const auto i = static_cast<std::size_t>(id.value - 1);
+  return id.value >= 1 && i < model_->patch_colors.size() ? model_->patch_colors[i] : std::string();
+}
+
 const Curve& CadOracle::curve(CurveId id) const {
   if (id.value < 1 || id.value > static_cast<int>(model_->curves.size())) {
     throw OracleError("CAD oracle: no curve " + std::to_string(id.value));

@@ -9,17 +9,11 @@
 #include <IGESControl_Reader.hxx>
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
-#include <STEPControl_Reader.hxx>
-#include <ShapeFix_Shape.hxx>
 #include <ShapeFix_Solid.hxx>
 #include <StepData_StepModel.hxx>
-#include <StepRepr_RepresentationItem.hxx>
-#include <TCollection_HAsciiString.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
-#include <XSControl_TransferReader.hxx>
-#include <XSControl_WorkSession.hxx>
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -27,6 +21,9 @@
 
 #include "cad_model.h"
 #include "isolated_read.h"
+#include "rdmesh/input_file.h"
+#include "shape_healing.h"
+#include "step_names.h"
 
 namespace rdmesh::cad {
 namespace {
@@ -42,34 +39,6 @@ int count(const TopoDS_Shape& s, TopAbs_ShapeEnum type) {
   int n = 0;
   for (TopExp_Explorer ex(s, type); ex.More(); ex.Next()) ++n;
   return n;
-}
-
-std::string counts(const TopoDS_Shape& s) {
-  return std::to_string(count(s, TopAbs_SOLID)) + " solids, " +
-         std::to_string(count(s, TopAbs_FACE)) + " faces, " +
-         std::to_string(count(s, TopAbs_EDGE)) + " edges";
-}
-
-ReadShape read_step(const std::string& path) {
-  STEPControl_Reader reader;
-  if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) {
-    throw InputError(path, "cannot parse the STEP file (corrupt or truncated?)");
-  }
-  check_step_numbers(reader.StepModel(), path);
-  if (reader.TransferRoots() == 0) throw InputError(path, "the STEP file holds no shape");
-  ReadShape r;
-  r.shape = reader.OneShape();
-  r.log.push_back("STEP read, lengths in millimetres");
-  const Handle(XSControl_TransferReader) tr = reader.WS()->TransferReader();
-  for (TopExp_Explorer ex(r.shape, TopAbs_SOLID); ex.More(); ex.Next()) {
-    const Handle(Standard_Transient) entity = tr->EntityFromShapeResult(ex.Current(), 1);
-    const Handle(StepRepr_RepresentationItem) item =
-        Handle(StepRepr_RepresentationItem)::DownCast(entity);
-    if (!item.IsNull() && !item->Name().IsNull() && item->Name()->Length() > 0) {
-      r.solid_names.emplace_back(ex.Current(), item->Name()->ToCString());
-    }
-  }
-  return r;
 }
 
 ReadShape read_iges(const std::string& path) {
@@ -128,27 +97,13 @@ void make_solids(ReadShape& r, const std::string& path) {
   r.shape = solids;
 }
 
-void heal(ReadShape& r, const std::string& path) {
-  const std::string before = counts(r.shape);
-  ShapeFix_Shape fix(r.shape);
-  fix.Perform();
-  if (fix.Status(ShapeExtend_FAIL)) throw InputError(path, "shape healing (ShapeFix_Shape) failed");
-  if (!fix.Status(ShapeExtend_DONE)) {
-    r.log.push_back("healing: nothing to fix (" + before + ")");
-    return;
-  }
-  // Solids may have been rebuilt: keep the names of those that survived.
-  r.shape = fix.Shape();
-  r.log.push_back("healing: fixed the shape; before " + before + ", after " + counts(r.shape));
-}
-
 // Everything about reading that runs OpenCASCADE on the file's content, which
 // may crash or loop on a malformed file: in a child process when isolated.
 ReadShape read_content(const std::string& path, const std::string& ext, const CadOptions& options) {
   ReadShape r;
   try {
     if (ext == ".step" || ext == ".stp") {
-      r = read_step(path);
+      r = read_step_with_names(path);
     } else if (ext == ".iges" || ext == ".igs") {
       r = read_iges(path);
     } else {
@@ -156,7 +111,7 @@ ReadShape read_content(const std::string& path, const std::string& ext, const Ca
     }
     if (r.shape.IsNull()) throw InputError(path, "the file holds no shape");
     if (count(r.shape, TopAbs_SOLID) == 0) make_solids(r, path);
-    if (options.heal) heal(r, path);
+    if (options.heal) heal_shape(r, path);
     if (options.check_validity) {
       BRepCheck_Analyzer check(r.shape);
       if (!check.IsValid()) {
@@ -175,8 +130,8 @@ ReadShape read_content(const std::string& path, const std::string& ext, const Ca
 
 ReadShape read_shape(const std::string& path, const CadOptions& options) {
   silence_opencascade();
+  check_input_file(path);
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path, "no such file");
   if (!std::ifstream(path).good()) throw InputError(path, "cannot open the file");
   if (std::filesystem::file_size(path, ec) == 0) throw InputError(path, "the file is empty");
   const std::string ext = lower_extension(path);

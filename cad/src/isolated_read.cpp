@@ -4,7 +4,9 @@
 
 #include <BinTools.hxx>
 #include <Standard_OutOfMemory.hxx>
+#include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
@@ -42,10 +44,12 @@
 namespace rdmesh::cad {
 namespace {
 
-// ---- The message: magic, outcome, text, log lines, solid names, shape, its
-// exact placements, end mark.
+// ---- The message: magic, outcome, text, log lines, solid names, face names and
+// colours, shape, its exact placements, end mark. Solids are numbered in
+// TopExp_Explorer order, faces in TopExp::MapShapes order: both are the same
+// on the shape read back.
 
-constexpr char kMagic[] = "rdmesh-cad-read-1";
+constexpr char kMagic[] = "rdmesh-cad-read-2";
 constexpr char kEnd[] = "end";
 
 enum class Outcome : char {
@@ -121,6 +125,21 @@ std::string encode(Outcome outcome, const std::string& text, const ReadShape* re
   }
   e.number(names.size());
   for (const std::string& name : names) e.text(name);
+  std::vector<ShapeStyle> styles;
+  if (read) {
+    TopTools_IndexedMapOfShape faces;
+    TopExp::MapShapes(read->shape, TopAbs_FACE, faces);
+    styles.resize(static_cast<std::size_t>(faces.Extent()));
+    for (const auto& [face, style] : read->face_styles) {
+      const int i = faces.FindIndex(face);
+      if (i > 0) styles[static_cast<std::size_t>(i - 1)] = style;
+    }
+  }
+  e.number(styles.size());
+  for (const ShapeStyle& style : styles) {
+    e.text(style.name);
+    e.text(style.color);
+  }
   e.text(shape.str());
   e.text(placements);
   e.text(kEnd);
@@ -145,6 +164,12 @@ bool decode(const std::string& in, Message& m) {
   for (std::string& name : names) {
     if (!d.text(name)) return false;
   }
+  std::vector<ShapeStyle> styles;
+  if (!d.number(n) || n > in.size()) return false;
+  styles.resize(n);
+  for (ShapeStyle& style : styles) {
+    if (!d.text(style.name) || !d.text(style.color)) return false;
+  }
   if (!d.text(shape) || !d.text(placements) || !d.text(end) || end != kEnd || !d.done()) {
     return false;
   }
@@ -157,7 +182,16 @@ bool decode(const std::string& in, Message& m) {
     if (i >= names.size()) return false;
     if (!names[i].empty()) m.read.solid_names.emplace_back(ex.Current(), names[i]);
   }
-  return i == names.size();
+  if (i != names.size()) return false;
+  TopTools_IndexedMapOfShape faces;
+  TopExp::MapShapes(m.read.shape, TopAbs_FACE, faces);
+  if (static_cast<std::size_t>(faces.Extent()) != styles.size()) return false;
+  for (std::size_t k = 0; k < styles.size(); ++k) {
+    if (!styles[k].name.empty() || !styles[k].color.empty()) {
+      m.read.face_styles.emplace_back(faces(static_cast<int>(k) + 1), styles[k]);
+    }
+  }
+  return true;
 }
 
 // The problem of an InputError about `path`, without the "path: " prefix.

@@ -3,8 +3,12 @@
 // Reading. `.step/.stp` and `.iges/.igs` go through OpenCASCADE's translators,
 // which convert every length to millimetres (the file's own unit is honoured);
 // `.brep` has no unit and is read as is. Solids become subdomains 1..n in file
-// order (assembly instances expanded), named after the STEP representation item
-// when it has a name, else "solid_<id>". A file without solids has its faces
+// order (assembly instances expanded), named after the STEP product of their part
+// ("nut"), else their assembly instance, else their representation item, else
+// "solid_<id>"; a name several solids share gets _1, _2... in file order. Faces
+// (patches) are named after the STEP face's name when it has one (and not every
+// face has that same name), else
+// "face_<id>", and keep the file's colour (patch_color). A file without solids has its faces
 // sewn; every closed shell becomes a solid, open shells are an InputError.
 //
 // Conformity. With several solids the model is made a conformal complex first
@@ -119,6 +123,9 @@ class CadOracle final : public DomainOracle {
   double exact_volume(SubdomainId id = kOutside) const;
   /// OpenCASCADE's exact area (BRepGProp) of patch `id`'s face; of all patches when id is 0.
   double exact_area(PatchId id = PatchId(0)) const;
+  /// The colour the file gives patch `id`'s face (its own, else its part's), as
+  /// "#rrggbb"; empty when it gives none (STEP only).
+  std::string patch_color(PatchId id) const;
   /// Number of solids read from the file (before the general fuse).
   int input_solids() const;
   /// What loading did (units, fuse, healing), one line per entry.
