@@ -2,23 +2,23 @@
 // Every failure is one line "rdmesh: error: ..." on stderr and a non-zero exit
 // (2 for bad input or an unwritable output); no partial output file is left.
 #include <CLI/CLI.hpp>
-
 #include <chrono>
 #include <cstdio>
 #include <iostream>
 #include <optional>
 #include <string>
 
-#include "rdmesh/errors.h"
-#include "rdmesh/fidelity.h"
-#include "rdmesh/number_text.h"
-#include "rdmesh/mesh_writers.h"
-#include "rdmesh/mesher.h"
-#include "rdmesh/quality_report.h"
+#include "arguments.h"
 #include "heap_setup.h"
 #include "model_measures.h"
-#include "run_setup.h"
 #include "progress_display.h"
+#include "rdmesh/errors.h"
+#include "rdmesh/fidelity.h"
+#include "rdmesh/mesh_writers.h"
+#include "rdmesh/mesher.h"
+#include "rdmesh/number_text.h"
+#include "rdmesh/quality_report.h"
+#include "run_setup.h"
 #include "view_command.h"
 
 namespace {
@@ -32,19 +32,26 @@ int run(const rdmesh::cli::Options& opt) {
   using namespace rdmesh;
   const auto start = std::chrono::steady_clock::now();
   cli::check_paths(opt);
-  (void)format_from_path(opt.output);  // unknown extension: fail before meshing
+  try {  // unknown extension, binary Medit...: fail before meshing
+    (void)writes_binary(TetMesh{}, format_from_path(opt.output), opt.write);
+  } catch (const InputError& e) {
+    if (!e.file().empty()) throw;
+    throw InputError(opt.output, e.what());
+  }
   cli::check_writable(opt.output);
   cli::check_fem_options(opt.fem, opt.input, opt.output, opt.surface_only);
   if (!opt.report.empty()) cli::check_writable(opt.report);
   if (!opt.picture.path.empty()) (void)cli::picture_options(opt.picture, opt.input);
 
+  cli::ProgressDisplay progress(!opt.quiet);
+  progress.phase("reading " + cli::printable(opt.input));
   cli::LoadedInput input = cli::load_input(opt);
+  progress.phase("checking the criteria");
   Criteria criteria = cli::resolve_criteria(opt, input);
   const std::vector<EntitySize> sizes = cli::apply_size_options(opt.fem, *input.oracle, criteria);
   const double seconds_load =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  cli::ProgressDisplay progress(!opt.quiet);
   MeshOptions mesh_options;
   mesh_options.progress = [&progress](const Progress& p) { progress(p); };
   mesh_options.exudation = cli::exudation_options(opt);
@@ -52,11 +59,11 @@ int run(const rdmesh::cli::Options& opt) {
   mesh_options.surface_only = opt.surface_only;
   mesh_options.time_limit_seconds = opt.time_limit;
   MeshResult result = generate_mesh(*input.oracle, criteria, mesh_options);
-  progress.finish();
 
   // The cheap measures and the fidelity check first: a mesh that does not
   // match the model is not written (unless asked).
   auto t = std::chrono::steady_clock::now();
+  progress.phase("checking the mesh against the model");
   const bool full = opt.full_check || !opt.report.empty();
   const QualityReport quality = measure_quality(result.mesh, full ? input.oracle.get() : nullptr);
   std::optional<FidelityReport> fidelity;
@@ -70,21 +77,30 @@ int run(const rdmesh::cli::Options& opt) {
   const bool bad = result.stats.time_limit_reached || (fidelity && !fidelity->passed);
 
   cli::FemResults fem;  // timed on its own, in its summary line
-  if (!bad || opt.keep_bad_mesh)
+  if (!bad || opt.keep_bad_mesh) {
+    if (opt.fem.order == 2) progress.phase("making second-order elements");
+    if (opt.fem.order != 2 && opt.fem.partitions > 0) progress.phase("partitioning");
     fem = cli::apply_fem_options(opt.fem, sizes, result.mesh, *input.oracle);
+  }
   t = std::chrono::steady_clock::now();
   if (!bad || opt.keep_bad_mesh) {
-    write_mesh(result.mesh, opt.output);
-    if (!opt.picture.path.empty()) cli::write_picture(result.mesh, opt.picture, opt.input);
+    progress.phase("writing " + cli::printable(opt.output));
+    write_mesh(result.mesh, opt.output, opt.write);
+    if (!opt.picture.path.empty()) {
+      progress.phase("drawing " + cli::printable(opt.picture.path));
+      cli::write_picture(result.mesh, opt.picture, opt.input);
+    }
   }
   const double seconds_write =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 
   const cli::RunTimes times{seconds_load, seconds_write, seconds_report};
   if (!opt.report.empty()) {
-    cli::write_json_report(opt, criteria, result.stats, result.exudation, quality, fidelity, times,
-                           fem);
+    progress.phase("writing " + cli::printable(opt.report));
+    cli::write_json_report(opt, criteria, *input.oracle, result.stats, result.exudation, quality,
+                           fidelity, times, fem);
   }
+  progress.finish();
   if (!opt.quiet) {
     std::cout << format_summary(quality) << cli::format_fem_summary(fem)
               << cli::format_run_summary(opt, result.stats, result.exudation, times,
@@ -133,18 +149,22 @@ int main(int argc, char** argv) {
   if (argc > 1 && std::string(argv[1]) == "view") return rdmesh::cli::run_view_command(argc - 1, argv + 1);
   rdmesh::cli::setup_heap();
   CLI::App app{"rdmesh: tetrahedral meshes of domains bounded by piecewise smooth surfaces"};
+  app.set_version_flag("--version", "rdmesh " RDMESH_VERSION);
   rdmesh::cli::Options opt;
   rdmesh::cli::add_options(app, opt);
   rdmesh::cli::add_fem_options(app, opt.fem);
+  opt.command_line = rdmesh::cli::command_line_text(argc, argv);
+  if (const auto flag = rdmesh::cli::single_dash_option(argc, argv, "oqh")) {
+    return fail(2, rdmesh::cli::unknown_single_dash_message(*flag, "rdmesh"));
+  }
   try {
     app.parse(argc, argv);
     if (opt.output.empty()) opt.output = rdmesh::cli::default_output_path(opt.input);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
+  } catch (const CLI::Success& e) {
+    return app.exit(e);  // --help, --version
   } catch (const CLI::ParseError& e) {
-    return fail(2, (opt.input.empty() ? std::string() : opt.input + ": ") + e.what());
+    return fail(2, (opt.input.empty() ? std::string() : opt.input + ": ") +
+                       rdmesh::cli::parse_error_message(e, app, "rdmesh"));
   }
   try {
     return run(opt);

@@ -1,11 +1,16 @@
-// Progress on stderr for runs longer than a second: vertices, queue sizes,
-// elapsed time. Rewrites one line on a terminal, prints a line every few
-// seconds otherwise (logs, CI).
+// Progress on stderr for every phase longer than a second (reading the input,
+// protecting features, refining, exuding, checking, writing): the phase, what it
+// counts (refinement: vertices and queues) and its time. On a terminal one line
+// is rewritten a few times a second; otherwise (logs, CI) a line every 5 s. A
+// phase that took longer than the delay ends with a line "PHASE: done in T s".
+// RDMESH_PROGRESS_DELAY (seconds, default 1) sets the delay; 0 shows every phase.
 #pragma once
 
-#include <unistd.h>
-
-#include <cstdio>
+#include <chrono>
+#include <condition_variable>
+#include <mutex>
+#include <string>
+#include <thread>
 
 #include "rdmesh/mesher.h"
 
@@ -13,29 +18,38 @@ namespace rdmesh::cli {
 
 class ProgressDisplay {
  public:
-  explicit ProgressDisplay(bool enabled) : enabled_(enabled), tty_(::isatty(STDERR_FILENO) != 0) {}
+  /// Disabled: prints nothing and starts no thread.
+  explicit ProgressDisplay(bool enabled);
+  ~ProgressDisplay();
+  ProgressDisplay(const ProgressDisplay&) = delete;
+  ProgressDisplay& operator=(const ProgressDisplay&) = delete;
 
-  void operator()(const Progress& p) {
-    if (!enabled_ || p.elapsed_seconds < 1.0) return;
-    if (!tty_ && p.elapsed_seconds - last_print_ < 5.0) return;
-    last_print_ = p.elapsed_seconds;
-    std::fprintf(stderr, "%srefining: %zu vertices, queues %zu edges / %zu facets / %zu cells, %.1f s%s",
-                 tty_ ? "\r" : "", p.vertices, p.edge_queue, p.facet_queue, p.cell_queue,
-                 p.elapsed_seconds,
-                 tty_ ? "   " : "\n");
-    printed_ = true;
-  }
-
-  /// Ends the rewritten line so that the summary starts on a fresh one.
-  void finish() {
-    if (printed_ && tty_) std::fputc('\n', stderr);
-  }
+  /// A new phase starts now (the previous one ends).
+  void phase(const std::string& name);
+  /// The mesher's callback: its phases and the refinement counts.
+  void operator()(const Progress& p);
+  /// Ends the current phase (its line if it was long) and stops the display.
+  void finish();
 
  private:
+  using Clock = std::chrono::steady_clock;
+  void run();
+  void end_phase_locked();
+  void print_locked();
+  double elapsed_locked() const;
+
   bool enabled_;
   bool tty_;
-  bool printed_ = false;
-  double last_print_ = -1e9;
+  double delay_;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  std::thread thread_;
+  bool stopping_ = false;
+  std::string phase_;   ///< empty: no phase running
+  std::string detail_;  ///< counts of the running phase
+  Clock::time_point start_;
+  double last_print_ = -1;       ///< elapsed time of the phase's last line, -1 = none
+  std::size_t line_length_ = 0;  ///< of the rewritten terminal line
 };
 
 }  // namespace rdmesh::cli

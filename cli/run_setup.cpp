@@ -4,21 +4,24 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
-#include <map>
 #include <fstream>
 #include <iostream>
+#include <map>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 
-#include <nlohmann/json.hpp>
-
+#include "arguments.h"
+#include "cad_sizes.h"
 #include "rdmesh/atomic_file.h"
 #include "rdmesh/cad_oracle.h"
 #include "rdmesh/errors.h"
+#include "rdmesh/input_file.h"
 #include "rdmesh/mesh_writers.h"
+#include "rdmesh/sha256.h"
 #include "rdmesh/triangle_mesh_oracle.h"
-#include "cad_sizes.h"
 
 namespace rdmesh::cli {
 namespace fs = std::filesystem;
@@ -27,19 +30,32 @@ void add_options(CLI::App& app, Options& opt) {
   app.add_option("input", opt.input, "Domain: .json implicit domain file, a .step/.stp/.brep/.iges/.igs CAD model, or a closed .off/.stl/.obj/.ply triangle mesh")->required();
   app.add_option("-o,--output", opt.output,
                  "Output mesh: .mesh (Medit), .msh (Gmsh 4.1) or .vtu (VTK); default INPUT-stem.msh");
-  app.add_option("--size", opt.size, "Target size h: edge, facet and cell size = h, facet distance h/10");
+  app.add_option("--size", opt.size,
+                 "Target size h: edge, facet and cell size = h, facet distance h/10")
+      ->check(finite_number());
   app.add_option("--edge-size", opt.edge_size,
-                 "Max radius of restricted edge balls on sharp curves (R2); default: facet size");
-  app.add_option("--facet-size", opt.facet_size, "Max radius of surface Delaunay balls (R4.1)");
-  app.add_option("--cell-size", opt.cell_size, "Max circumradius of tetrahedra (R5.1)");
+                 "Max radius of restricted edge balls on sharp curves (R2); default: facet size")
+      ->check(finite_number());
+  app.add_option("--facet-size", opt.facet_size, "Max radius of surface Delaunay balls (R4.1)")
+      ->check(finite_number());
+  app.add_option("--cell-size", opt.cell_size, "Max circumradius of tetrahedra (R5.1)")
+      ->check(finite_number());
   app.add_option("--facet-distance", opt.facet_distance,
-                 "Max distance between a boundary facet's circumcenter and the surface");
-  app.add_option("--facet-angle", opt.facet_angle, "Min angle of boundary facets, degrees (default 25)");
-  app.add_option("--radius-edge", opt.radius_edge, "Max radius-edge ratio of tetrahedra (default 2)");
-  app.add_option("--min-size", opt.min_size,
-                 "Termination guard: no two vertices closer than this (default 1e-4 of the box diagonal)");
+                 "Max distance between a boundary facet's circumcenter and the surface")
+      ->check(finite_number());
+  app.add_option("--facet-angle", opt.facet_angle,
+                 "Min angle of boundary facets, degrees (default 25)")
+      ->check(finite_number());
+  app.add_option("--radius-edge", opt.radius_edge,
+                 "Max radius-edge ratio of tetrahedra (default 2)")
+      ->check(finite_number());
+  app.add_option(
+         "--min-size", opt.min_size,
+         "Termination guard: no two vertices closer than this (default 1e-4 of the box diagonal)")
+      ->check(finite_number());
   app.add_option("--max-elements", opt.max_elements,
                  "Refuse criteria whose estimated element count exceeds this (default 5e7)")
+      ->check(finite_number())
       ->check(CLI::PositiveNumber);
   app.add_flag("--no-exude", opt.no_exude, "Skip sliver exudation after refinement");
   const CLI::Validator seconds(
@@ -73,6 +89,7 @@ void add_options(CLI::App& app, Options& opt) {
   app.add_option("--feature-angle", opt.feature_angle,
                  "Triangle-mesh input: an edge is a sharp curve when its two triangles' normals "
                  "turn by more than this, degrees (default 60)")
+      ->check(finite_number())
       ->check(CLI::Range(0.0, 180.0));
   app.add_option("--time-limit", opt.time_limit,
                  "Stop refinement after this many seconds of meshing; the run then fails "
@@ -86,6 +103,19 @@ void add_options(CLI::App& app, Options& opt) {
                  "(also every boundary triangle's distance to its surface; also with --report)")
       ->transform(CLI::CheckedTransformer(std::map<std::string, bool>{{"cheap", false}, {"full", true}},
                                           CLI::ignore_case));
+  auto* binary = app.add_flag_callback(
+      "--binary", [&opt] { opt.write.encoding = Encoding::binary; },
+      "Binary output: .msh 4.1 binary, .vtu zlib-compressed (default: binary above 1e6 "
+      "elements)");
+  app.add_flag_callback(
+         "--ascii", [&opt] { opt.write.encoding = Encoding::ascii; },
+         "Text output whatever the mesh's size")
+      ->excludes(binary);
+  app.add_option("--format", opt.write.msh22,
+                 "The .msh version: 'msh41' (Gmsh 4.1; default) or 'msh22' (Gmsh 2.2 ASCII, for "
+                 "older solvers)")
+      ->transform(CLI::CheckedTransformer(
+          std::map<std::string, bool>{{"msh41", false}, {"msh22", true}}, CLI::ignore_case));
   app.add_option("--picture", opt.picture.path,
                  "Also write a picture of the mesh (.png): the boundary and a cut view");
   add_picture_options(app, opt.picture);
@@ -143,14 +173,7 @@ bool same_file(const fs::path& a, const fs::path& b) {
 }  // namespace
 
 void check_paths(const Options& opt) {
-  std::error_code ec;
-  const fs::file_status status = fs::status(opt.input, ec);
-  if (!fs::exists(status)) throw InputError(opt.input, "no such file");
-  if (fs::is_directory(status)) throw InputError(opt.input, "is a directory");
-  if (!fs::is_regular_file(status)) throw InputError(opt.input, "not a regular file");
-  if (::access(opt.input.c_str(), R_OK) != 0) {
-    throw InputError(opt.input, "cannot read the file (permission denied)");
-  }
+  check_input_file(opt.input);
   const std::pair<const char*, const std::string*> outputs[] = {
       {"-o", &opt.output}, {"--report", &opt.report}, {"--picture", &opt.picture.path}};
   for (std::size_t i = 0; i < std::size(outputs); ++i) {
@@ -258,29 +281,75 @@ ExudationOptions exudation_options(const Options& opt) {
 
 namespace {
 
-/// A uniform size as its value, a varying one as "varying" (its expression is in the input).
-nlohmann::json field_json(const ScalarField& f) {
+/// A uniform size as its value; a varying one as {"varying": true, "min", "max"} over
+/// the 16^3 grid of nodes of `box` that check_feasible samples.
+nlohmann::json field_json(const ScalarField& f, const Box3& box) {
   if (f.is_uniform()) return f.constant;
-  return "varying";
+  constexpr int kNodes = 16;
+  double lo = f(box.lo), hi = lo;
+  for (int i = 0; i < kNodes; ++i) {
+    for (int j = 0; j < kNodes; ++j) {
+      for (int k = 0; k < kNodes; ++k) {
+        const auto at = [&](double a, double b, int n) { return a + (b - a) * n / (kNodes - 1); };
+        const double v =
+            f({at(box.lo.x, box.hi.x, i), at(box.lo.y, box.hi.y, j), at(box.lo.z, box.hi.z, k)});
+        lo = std::min(lo, v);
+        hi = std::max(hi, v);
+      }
+    }
+  }
+  return {{"varying", true}, {"min", lo}, {"max", hi}};
+}
+
+bool is_triangle_mesh(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
+  return ext == ".off" || ext == ".stl" || ext == ".obj" || ext == ".ply";
+}
+
+/// Every criterion and setting as the run used it (defaults resolved).
+nlohmann::json criteria_json(const Options& opt, const Criteria& criteria, const Box3& box) {
+  nlohmann::json c = {
+      {"edge_size", field_json(criteria.edge_size, box)},
+      {"facet_size", field_json(criteria.facet_size, box)},
+      {"cell_size", field_json(criteria.cell_size, box)},
+      {"facet_distance", field_json(criteria.facet_distance, box)},
+      {"facet_angle_deg", criteria.facet_angle_deg},
+      {"cell_radius_edge", criteria.cell_radius_edge},
+      {"min_size", criteria.min_size},
+      {"max_elements", opt.max_elements},
+      {"features", opt.features == FeatureMethod::kRefineEdges ? "refine" : "protect"},
+      {"surface_only", opt.surface_only},
+      {"exudation", !opt.no_exude && !opt.surface_only},
+      {"exude_time_limit_s", opt.exude_time_limit},
+      {"time_limit_s", opt.time_limit},
+      {"check", opt.full_check || !opt.report.empty() ? "full" : "cheap"}};
+  if (is_triangle_mesh(opt.input)) c["feature_angle_deg"] = opt.feature_angle;
+  if (is_cad_file(opt.input)) c["heal"] = opt.heal;
+  return c;
 }
 
 }  // namespace
 
-void write_json_report(const Options& opt, const Criteria& criteria, const RefinementStats& stats,
-                       const ExudationStats& exudation, const QualityReport& quality,
-                       const std::optional<FidelityReport>& fidelity, const RunTimes& times,
-                       const FemResults& fem) {
+void write_json_report(const Options& opt, const Criteria& criteria, const DomainOracle& oracle,
+                       const RefinementStats& stats, const ExudationStats& exudation,
+                       const QualityReport& quality, const std::optional<FidelityReport>& fidelity,
+                       const RunTimes& times, const FemResults& fem) {
   nlohmann::json j = to_json(quality);
   j.update(fem_json(fem));
+  j["rdmesh_version"] = RDMESH_VERSION;
+  j["command_line"] = opt.command_line;
   j["input"] = opt.input;
+  j["input_sha256"] = sha256_of_file(opt.input);
   j["output"] = opt.output;
-  j["criteria"] = {{"edge_size", field_json(criteria.edge_size)},
-                   {"facet_size", field_json(criteria.facet_size)},
-                   {"cell_size", field_json(criteria.cell_size)},
-                   {"facet_distance", field_json(criteria.facet_distance)},
-                   {"facet_angle_deg", criteria.facet_angle_deg},
-                   {"cell_radius_edge", criteria.cell_radius_edge},
-                   {"min_size", criteria.min_size}};
+  j["criteria"] = criteria_json(opt, criteria, oracle.bounding_box());
+  if (const auto* cad = dynamic_cast<const CadOracle*>(&oracle)) {
+    for (auto& patch : j["patches"]) {
+      const std::string color = cad->patch_color(PatchId(patch.at("id").get<int>()));
+      if (!color.empty()) patch["color"] = color;
+    }
+  }
   j["refinement"] = {{"initial_points", stats.initial_points},
                      {"edge_centers_inserted", stats.inserted_edge_centers},
                      {"facet_centers_inserted", stats.inserted_facet_centers},
@@ -352,10 +421,16 @@ std::string format_run_summary(const Options& opt, const RefinementStats& stats,
   } else {
     s << "exudation: off\n";
   }
-  s << "time: load " << times.load << " s, protect " << stats.seconds_protect << " s, refine "
-    << stats.seconds_initial + stats.seconds_refine
-    << " s, exude " << exudation.seconds << " s, extract " << stats.seconds_extract << " s, write " << times.write << " s, report "
-    << times.report << " s\n";
+  // Times with 3 significant digits (%g): a short phase reads 0.00312 s, not 0.00 s.
+  const auto sec = [](double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, v >= 100 ? "%.0f" : "%.3g", v);
+    return std::string(text);
+  };
+  s << "time: load " << sec(times.load) << " s, protect " << sec(stats.seconds_protect)
+    << " s, refine " << sec(stats.seconds_initial + stats.seconds_refine) << " s, exude "
+    << sec(exudation.seconds) << " s, extract " << sec(stats.seconds_extract) << " s, write "
+    << sec(times.write) << " s, report " << sec(times.report) << " s\n";
   if (wrote_mesh) {
     s << "wrote " << opt.output << (opt.report.empty() ? "" : " and " + opt.report)
       << (opt.picture.path.empty() ? "" : " and " + opt.picture.path) << '\n';

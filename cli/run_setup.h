@@ -4,23 +4,24 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
-
 #include <memory>
 #include <optional>
 #include <string>
 
+#include "picture_args.h"
 #include "rdmesh/criteria.h"
 #include "rdmesh/domain_file.h"
 #include "rdmesh/fidelity.h"
+#include "rdmesh/mesh_writers.h"
 #include "rdmesh/mesher.h"
 #include "rdmesh/oracle.h"
 #include "rdmesh/quality_report.h"
 #include "fem_options.h"
-#include "picture_args.h"
 
 namespace rdmesh::cli {
 
 struct Options {
+  std::string command_line;  ///< argv quoted for a shell, for the report
   std::string input;
   std::string output;  ///< default: the input's stem + ".msh" in the current directory
   std::optional<double> size, edge_size, facet_size, cell_size, facet_distance, facet_angle, radius_edge,
@@ -39,6 +40,7 @@ struct Options {
   bool keep_bad_mesh = false; ///< --keep-bad-mesh: write a mesh that failed the fidelity check
   bool full_check = false;    ///< --check full (or --report): measure every distance
   FemOptions fem;             ///< --order (fem_options.h)
+  WriteOptions write;         ///< --binary / --ascii, --format msh41|msh22
 };
 
 void add_options(CLI::App& app, Options& opt);
@@ -78,10 +80,13 @@ struct RunTimes {
   double load = 0, write = 0, report = 0;
 };
 
-void write_json_report(const Options& opt, const Criteria& criteria, const RefinementStats& stats,
-                       const ExudationStats& exudation, const QualityReport& quality,
-                       const std::optional<FidelityReport>& fidelity, const RunTimes& times,
-                       const FemResults& fem = {});
+/// The report: version, command line, the input's SHA-256, every criterion as used (varying
+/// sizes as their min and max over the oracle's box), the quality (with the CAD model's
+/// patch colours), the fidelity, the phases and the second-order results.
+void write_json_report(const Options& opt, const Criteria& criteria, const DomainOracle& oracle,
+                       const RefinementStats& stats, const ExudationStats& exudation,
+                       const QualityReport& quality, const std::optional<FidelityReport>& fidelity,
+                       const RunTimes& times, const FemResults& fem = {});
 
 /// `wrote_mesh`: false when the fidelity check (or the time limit) kept the mesh from being written.
 std::string format_run_summary(const Options& opt, const RefinementStats& stats,

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <string>
 
+#include "arguments.h"
 #include "picture_args.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/picture.h"
@@ -38,12 +39,17 @@ int run_view_command(int argc, char** argv) {
   app.add_option("-o,--output", args.path, "The picture, .png (default: MESH-stem.png)");
   add_picture_options(app, args);
   app.add_flag("-q,--quiet", quiet, "No summary line");
+  if (const auto flag = single_dash_option(argc, argv, "oqh")) {
+    std::fprintf(stderr, "rdmesh: error: %s\n",
+                 unknown_single_dash_message(*flag, "rdmesh view").c_str());
+    return 2;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "rdmesh: error: %s\n", e.what());
+    std::fprintf(stderr, "rdmesh: error: %s\n", parse_error_message(e, app, "rdmesh view").c_str());
     return 2;
   }
   try {

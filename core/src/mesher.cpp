@@ -70,6 +70,14 @@ void record_protection(const detail::ProtectionPlanner& planner, const detail::P
   }
 }
 
+/// Tells the progress callback that `phase` starts.
+void announce(const MeshOptions& options, const char* phase) {
+  if (!options.progress) return;
+  Progress p;
+  p.phase = phase;
+  options.progress(p);
+}
+
 }  // namespace
 
 MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& given,
@@ -93,6 +101,7 @@ MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& given,
   std::optional<detail::ProtectionPlanner> planner;
   detail::ProtectionPlan plan;
   if (protect) {
+    announce(options, "protecting sharp features");
     planner.emplace(make_planner(oracle, criteria));
     plan = planner->plan();
   }
@@ -110,19 +119,23 @@ MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& given,
                                                 protect ? &plan : nullptr);
     refiner->set_deadline(deadline);
     t = std::chrono::steady_clock::now();
+    announce(options, "inserting initial points");
     refiner->insert_initial_points();
     initial += seconds_since(t);
     t = std::chrono::steady_clock::now();
+    announce(options, "refining");
     refiner->refine(protect && restarts < kMaxRestarts);
     restart = false;
     const bool out_of_time = refiner->stats().time_limit_reached;
     if (protect && restarts < kMaxRestarts && !refiner->conflicts().empty() && !out_of_time) {
       const auto ts = std::chrono::steady_clock::now();
+      announce(options, "protecting sharp features");
       restart = planner->shrink(refiner->conflicts(), plan);
       protect_seconds += seconds_since(ts);
       if (restart) {
         ++restarts;
       } else {
+        announce(options, "refining");
         refiner->refine();  // as small as the minimum size allows: finish this run
       }
     }
@@ -140,12 +153,14 @@ MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& given,
     }
   }
   if (exudation.enabled && !options.surface_only) {
+    announce(options, "exuding slivers");
     const detail::ChainEdges chains = refiner->chain_edges();
     result.exudation =
         detail::exude_slivers(refiner->triangulation(), criteria, exudation, &chains);
   }
 
   t = std::chrono::steady_clock::now();
+  announce(options, "extracting the mesh");
   result.mesh = refiner->extract_mesh();
   result.stats = refiner->stats();
   if (protect) {

@@ -32,7 +32,12 @@ std::string format_features(const QualityReport& r) {
       "curves %s",
       r.curves.size(), broken, r.corners_present, r.corners_expected,
       distance_text(r.feature_max_distance).c_str());
-  if (failures > 0) s += printf_string(" (%zu curve queries failed)", failures);
+  if (failures > 0) {
+    s += printf_string(
+        " (%zu sample points not measured: the oracle found no closest point on "
+        "their curve, the max distance leaves them out)",
+        failures);
+  }
   s += '\n';
   if (r.curves.empty()) return s;
   s += printf_string("  %-8s %-24s %12s %6s %12s\n", "curve", "name", "edges", "chain", "max dist");
@@ -105,7 +110,12 @@ std::string format_summary(const QualityReport& r) {
                      r.boundary_euler_characteristic,
                      distance_text(r.boundary_max_distance).c_str());
   if (r.projection_failures > 0) {
-    s += printf_string(" (%zu projections failed)", r.projection_failures);
+    // A sample point (vertex, edge midpoint, centroid) whose closest point the oracle
+    // could not find is left out of the max distance: say so, and what it means.
+    s += printf_string(
+        " (%zu sample points not measured: the oracle found no closest point on "
+        "their patch, the max distance leaves them out)",
+        r.projection_failures);
   }
   s += '\n';
   if (!surface) {

@@ -15,6 +15,10 @@ namespace rdmesh {
 
 /// Snapshot handed to the progress callback.
 struct Progress {
+  /// The phase running: "protecting sharp features", "inserting initial points",
+  /// "refining", "exuding slivers" or "extracting the mesh". Each phase is
+  /// announced as it starts, with zero counts; the counts come from the insertions.
+  const char* phase = "refining";
   std::size_t vertices = 0;       ///< vertices in the triangulation
   std::size_t edge_queue = 0;     ///< restricted edges waiting (R1, R2)
   std::size_t facet_queue = 0;    ///< restricted facets waiting (R3, R4)
@@ -36,7 +40,8 @@ enum class FeatureMethod {
 };
 
 struct MeshOptions {
-  /// Called every few thousand insertions (and once at the end), from the calling thread.
+  /// Called as each phase starts and, while refining, every few thousand insertions (and
+  /// once at the end), from the calling thread.
   std::function<void(const Progress&)> progress;
   /// Sliver exudation after refinement (on by default).
   ExudationOptions exudation;
