@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <map>
+#include <vector>
 
 namespace rdmesh::cad {
 namespace {
@@ -76,6 +77,48 @@ std::string replaced(const TopoDS_Shape& before, const Handle(ShapeBuild_ReShape
   return out;
 }
 
+double tolerance_of(const TopoDS_Shape& s) {
+  switch (s.ShapeType()) {
+    case TopAbs_VERTEX:
+      return BRep_Tool::Tolerance(TopoDS::Vertex(s));
+    case TopAbs_EDGE:
+      return BRep_Tool::Tolerance(TopoDS::Edge(s));
+    case TopAbs_FACE:
+      return BRep_Tool::Tolerance(TopoDS::Face(s));
+    default:
+      return 0;
+  }
+}
+
+/// The tolerances of the faces, edges and vertices before healing (healing may
+/// change them in place, in the same TShape).
+std::vector<std::pair<TopoDS_Shape, double>> tolerances(const TopoDS_Shape& shape) {
+  std::vector<std::pair<TopoDS_Shape, double>> out;
+  for (TopAbs_ShapeEnum kind : {TopAbs_FACE, TopAbs_EDGE, TopAbs_VERTEX}) {
+    TopTools_IndexedMapOfShape map;
+    TopExp::MapShapes(shape, kind, map);
+    for (int i = 1; i <= map.Extent(); ++i) out.emplace_back(map(i), tolerance_of(map(i)));
+  }
+  return out;
+}
+
+/// "3 edges, 2 vertices had their tolerance changed", or empty.
+std::string tolerance_changes(const std::vector<std::pair<TopoDS_Shape, double>>& before,
+                              const Handle(ShapeBuild_ReShape) & context) {
+  std::map<TopAbs_ShapeEnum, int> changed;
+  for (const auto& [shape, tolerance] : before) {
+    const TopoDS_Shape now = context->Value(shape);
+    if (!now.IsNull() && tolerance_of(now) != tolerance) ++changed[shape.ShapeType()];
+  }
+  std::string out;
+  for (const auto& [kind, name] : kKinds) {
+    if (changed.count(kind)) {
+      out += (out.empty() ? "" : ", ") + std::to_string(changed[kind]) + " " + name;
+    }
+  }
+  return out.empty() ? out : out + " had their tolerance changed";
+}
+
 /// The fixes ShapeFix recorded, by kind ("FixAdvWire.FixSmall.MSG0" x 3).
 std::string fixes(const Handle(ShapeExtend_MsgRegistrator) & messages) {
   std::map<std::string, int> kinds;
@@ -99,6 +142,7 @@ void heal_shape(ReadShape& r, const std::string& path) {
   const TopoDS_Shape before = r.shape;
   const std::string counts_before = counts(before);
   const double tolerance_before = max_tolerance(before);
+  const std::vector<std::pair<TopoDS_Shape, double>> tolerances_before = tolerances(before);
   ShapeFix_Shape fix(before);
   Handle(ShapeExtend_MsgRegistrator) messages = new ShapeExtend_MsgRegistrator;
   fix.SetMsgRegistrator(messages);
@@ -119,9 +163,16 @@ void heal_shape(ReadShape& r, const std::string& path) {
     const TopoDS_Shape now = context->Value(face);
     if (!now.IsNull()) face = now;
   }
-  r.log.push_back("healing: " + replaced(before, context));
+  const std::string entities = replaced(before, context);
+  const std::string retoleranced = tolerance_changes(tolerances_before, context);
   const std::string fixed = fixes(messages);
+  r.log.push_back("healing: " + entities + (retoleranced.empty() ? "" : "; " + retoleranced));
   if (!fixed.empty()) r.log.push_back("healing: fixes made: " + fixed);
+  if (entities == "no entity replaced" && retoleranced.empty() && fixed.empty()) {
+    r.log.push_back(
+        "healing: ShapeFix_Shape reported work but changed no entity and no tolerance (in-place "
+        "repairs only: parameter curves, orientations)");
+  }
   r.log.push_back("healing: largest vertex/edge tolerance " + number(tolerance_before) + " -> " +
                   number(max_tolerance(r.shape)));
   const std::string counts_after = counts(r.shape);

@@ -30,9 +30,11 @@
 namespace rdmesh::cad {
 namespace {
 
-/// A name worth keeping: not empty, not "NONE", not an entity reference "#123".
+/// A name worth keeping: not empty, not "NONE", not an entity reference "#123", not
+/// the product name OpenCASCADE's own writer gives every part.
 bool informative(const std::string& name) {
   if (name.empty() || name == "NONE" || name == "none") return false;
+  if (name.rfind("Open CASCADE STEP translator", 0) == 0) return false;
   if (name[0] == '#' && name.size() > 1 &&
       std::all_of(name.begin() + 1, name.end(), [](unsigned char c) { return std::isdigit(c); })) {
     return false;
@@ -76,7 +78,8 @@ std::string color_of(const Handle(XCAFDoc_ColorTool) & colors, const Key& key) {
 
 struct NamedSolid {
   TopoDS_Shape solid;  // placed
-  std::string name;
+  std::string part;    // the product's name
+  std::string instance;  // the assembly instance's name
 };
 
 struct Walk {
@@ -88,8 +91,7 @@ struct Walk {
   void part(const TDF_Label& label, const TopLoc_Location& place, const std::string& instance) {
     const TopoDS_Shape shape = XCAFDoc_ShapeTool::GetShape(label);
     if (shape.IsNull()) return;
-    std::string name = label_name(label);
-    if (name.empty()) name = instance;
+    const std::string name = label_name(label);
     const std::string part_color = color_of(colors, label);
     TopTools_IndexedMapOfShape faces_of_part;
     TopExp::MapShapes(shape, TopAbs_FACE, faces_of_part);
@@ -103,7 +105,7 @@ struct Walk {
       if (!style.name.empty() || !style.color.empty()) faces.emplace_back(face.Moved(place), style);
     }
     for (TopExp_Explorer ex(shape, TopAbs_SOLID); ex.More(); ex.Next()) {
-      solids.push_back({ex.Current().Moved(place), name});
+      solids.push_back({ex.Current().Moved(place), name, instance});
     }
   }
 
@@ -177,27 +179,41 @@ ReadShape read_step_with_names(const std::string& path) {
   walk.shapes->GetFreeShapes(roots);
   for (int i = 1; i <= roots.Length(); ++i) walk.visit(roots.Value(i), TopLoc_Location(), {});
 
+  // Per solid of the shape: its representation item's name, its part's, its instance's.
   std::vector<TopoDS_Shape> solids;
-  std::vector<std::string> names;
+  std::vector<std::string> own, part, instance;
   std::vector<char> used(walk.solids.size(), 0);
+  const Handle(XSControl_TransferReader) transfer = reader.ChangeReader().WS()->TransferReader();
   for (TopExp_Explorer ex(r.shape, TopAbs_SOLID); ex.More(); ex.Next()) {
     solids.push_back(ex.Current());
-    names.emplace_back();
+    own.emplace_back();
+    part.emplace_back();
+    instance.emplace_back();
+    const Handle(StepRepr_RepresentationItem) item = Handle(StepRepr_RepresentationItem)::DownCast(
+        transfer->EntityFromShapeResult(ex.Current(), 1));
+    if (!item.IsNull() && !item->Name().IsNull() && informative(item->Name()->ToCString())) {
+      own.back() = item->Name()->ToCString();
+    }
     for (std::size_t k = 0; k < walk.solids.size(); ++k) {
       if (used[k] || !same_placed(walk.solids[k].solid, ex.Current())) continue;
       used[k] = 1;
-      names.back() = walk.solids[k].name;
+      part.back() = walk.solids[k].part;
+      instance.back() = walk.solids[k].instance;
       break;
     }
   }
-  // No product or instance name: the representation item's, as STEPControl gives it.
-  const Handle(XSControl_TransferReader) transfer = reader.ChangeReader().WS()->TransferReader();
+  // The solid's own name unless several solids share it (every CATIA body is a
+  // "PartBody"), else its part's (the product: "nut"), else its instance's.
+  std::map<std::string, int> own_uses;
+  for (const std::string& n : own) ++own_uses[n];
+  std::vector<std::string> names(solids.size());
   for (std::size_t i = 0; i < solids.size(); ++i) {
-    if (!names[i].empty()) continue;
-    const Handle(StepRepr_RepresentationItem) item = Handle(StepRepr_RepresentationItem)::DownCast(
-        transfer->EntityFromShapeResult(solids[i], 1));
-    if (!item.IsNull() && !item->Name().IsNull() && informative(item->Name()->ToCString())) {
-      names[i] = item->Name()->ToCString();
+    if (!own[i].empty() && own_uses[own[i]] == 1) {
+      names[i] = own[i];
+    } else if (!part[i].empty()) {
+      names[i] = part[i];
+    } else {
+      names[i] = !instance[i].empty() ? instance[i] : own[i];
     }
   }
   make_unique(names);

@@ -1,8 +1,10 @@
 // STEP files through OpenCASCADE's XCAF reader: the shape as STEPControl_Reader
 // gives it, plus the names and colours the file holds. A solid is named after
-// its part's product ("nut"), else its assembly instance ("NUT::1"), else its
-// representation item; a face after its own name, with its colour (its own, else
-// its part's). Entity references ("#1099"), "NONE" and empty names are no names.
+// its own representation item when no other solid has that name ("PartBody" in a
+// one-part file), else its part's product ("nut"), else its assembly instance
+// ("NUT::1"); a face after its own name, with its colour (its own, else its
+// part's). Entity references ("#1099"), "NONE", empty names and the product name
+// OpenCASCADE's writer gives every part are no names.
 #pragma once
 
 #include <string>

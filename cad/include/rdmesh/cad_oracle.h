@@ -3,9 +3,10 @@
 // Reading. `.step/.stp` and `.iges/.igs` go through OpenCASCADE's translators,
 // which convert every length to millimetres (the file's own unit is honoured);
 // `.brep` has no unit and is read as is. Solids become subdomains 1..n in file
-// order (assembly instances expanded), named after the STEP product of their part
-// ("nut"), else their assembly instance, else their representation item, else
-// "solid_<id>"; a name several solids share gets _1, _2... in file order. Faces
+// order (assembly instances expanded), named after their STEP representation item
+// when no other solid has that name, else the STEP product of their part ("nut"),
+// else their assembly instance, else "solid_<id>"; a name several solids share
+// gets _1, _2... in file order. Faces
 // (patches) are named after the STEP face's name when it has one (and not every
 // face has that same name), else
 // "face_<id>", and keep the file's colour (patch_color). A file without solids has its faces
