@@ -29,6 +29,7 @@ const std::map<std::string, std::string>& accepted_values() {
       {"--feature-angle", "an angle in degrees in [0, 180]"},
       {"--check", "cheap or full"},
       {"--format", "msh41 or msh22"},
+      {"--order", "1 or 2"},
       {"--picture", "a file name ending in .png"},
       {"--view", "iso, x, y or z"},
       {"--picture-size", "WIDTHxHEIGHT, such as 1600x900"},

@@ -24,7 +24,7 @@ ProgressDisplay::ProgressDisplay(bool enabled)
   if (enabled_) thread_ = std::thread([this] { run(); });
 }
 
-ProgressDisplay::~ProgressDisplay() { finish(); }
+ProgressDisplay::~ProgressDisplay() { stop(false); }
 
 double ProgressDisplay::elapsed_locked() const {
   return std::chrono::duration<double>(Clock::now() - start_).count();
@@ -54,12 +54,19 @@ void ProgressDisplay::operator()(const Progress& p) {
   detail_ = text;
 }
 
-void ProgressDisplay::finish() {
+void ProgressDisplay::finish() { stop(true); }
+
+void ProgressDisplay::stop(bool completed) {
   if (!enabled_) return;
   {
     std::lock_guard<std::mutex> lock(mutex_);
     if (stopping_) return;
-    end_phase_locked();
+    if (completed) {
+      end_phase_locked();
+    } else if (tty_ && line_length_ > 0) {
+      // An error ends the run: its one line replaces the progress line.
+      std::fprintf(stderr, "\r%*s\r", static_cast<int>(line_length_), "");
+    }
     phase_.clear();
     stopping_ = true;
   }

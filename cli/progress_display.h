@@ -28,11 +28,14 @@ class ProgressDisplay {
   void phase(const std::string& name);
   /// The mesher's callback: its phases and the refinement counts.
   void operator()(const Progress& p);
-  /// Ends the current phase (its line if it was long) and stops the display.
+  /// Ends the current phase (its line if it was long) and stops the display. Without
+  /// it (an error unwinding the run) the destructor stops it without that line and
+  /// clears a terminal's progress line, so that the error line stands alone.
   void finish();
 
  private:
   using Clock = std::chrono::steady_clock;
+  void stop(bool completed);
   void run();
   void end_phase_locked();
   void print_locked();

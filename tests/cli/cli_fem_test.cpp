@@ -13,13 +13,6 @@
 namespace rdmesh::test {
 namespace {
 
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 TEST(CliFem, OrderTwoWritesQuadraticElementsAndReportsThem) {
   ScratchDir dir;
   const std::string sample = "'" + source_path("samples/capped_cylinder.json") + "'";

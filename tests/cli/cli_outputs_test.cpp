@@ -11,13 +11,6 @@
 namespace rdmesh::test {
 namespace {
 
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 std::string sphere() {
   return std::string("'") + source_path("samples/sphere.json") + "' --size 0.5 -q";
 }

@@ -30,6 +30,9 @@ class ScratchDir {
 /// Runs `rdmesh ARGS` (ARGS already shell-quoted) with `dir` as working directory.
 CliRun run_cli(const std::string& args, const std::filesystem::path& dir);
 
+/// The bytes of the file at `path` (empty when it cannot be read).
+std::string read_file(const std::string& path);
+
 /// Path of a file in the source tree (e.g. "samples/sphere.json").
 std::string source_path(const std::string& relative);
 
