@@ -30,6 +30,7 @@ const std::map<std::string, std::string>& accepted_values() {
       {"--check", "cheap or full"},
       {"--format", "msh41 or msh22"},
       {"--order", "1 or 2"},
+      {"--partitions", "a number of partitions from 1 to 1048576"},
       {"--picture", "a file name ending in .png"},
       {"--view", "iso, x, y or z"},
       {"--picture-size", "WIDTHxHEIGHT, such as 1600x900"},

@@ -9,6 +9,7 @@
 #include "io/test_meshes.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/mesh_writers.h"
+#include "rdmesh/partition.h"
 #include "rdmesh/view_mesh.h"
 
 namespace rdmesh::testing {
@@ -108,6 +109,24 @@ TEST(BinaryWritersGmsh, GmshReadsBinaryAndMsh22LikeTheAsciiFile) {
   const std::string again = read_text(dir.file("again.msh"));
   for (const char* name : {"\"x00\"", "\"rim\"", "\"corner_8\"", "\"interface\""}) {
     EXPECT_NE(again.find(name), std::string::npos) << name;
+  }
+}
+
+TEST_F(BinaryWriters, PartitionedMeshesTooInMeshioAndGmsh) {
+  TetMesh mesh = featured_mesh();
+  partition_mesh(mesh, 2);
+  const nlohmann::json text = write_and_read_as(mesh, "p.vtu", ascii());
+  const nlohmann::json bin = write_and_read_as(mesh, "q.vtu", binary());
+  EXPECT_EQ(text, bin);
+  EXPECT_EQ(read_cells(bin, "tetra", "partition").size(), mesh.tets.size());
+  if (!gmsh_available()) RDMESH_MISSING_PREREQUISITE("gmsh");
+  write_mesh(mesh, dir_.file("p.msh"), ascii());
+  write_mesh(mesh, dir_.file("q.msh"), binary());
+  for (const char* name : {"p.msh", "q.msh"}) {
+    const std::string log = expect_gmsh_accepts("-check " + dir_.file(name));
+    EXPECT_NE(log.find("2 partitions"), std::string::npos) << name << "\n" << log;
+    EXPECT_NE(log.find("62 elements"), std::string::npos) << name << "\n" << log;
+    EXPECT_NE(log.find("12 nodes"), std::string::npos) << name << "\n" << log;
   }
 }
 
