@@ -169,7 +169,9 @@ int main(int argc, char** argv) {
   try {
     return run(opt);
   } catch (const rdmesh::InputError& e) {
-    return fail(2, e.what());
+    // The library's errors about the run (criteria too coarse for the domain)
+    // name no file: the input is the one.
+    return fail(2, e.file().empty() ? opt.input + ": " + e.what() : e.what());
   } catch (const rdmesh::OutputError& e) {
     return fail(2, e.what());
   } catch (const rdmesh::Error& e) {

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -137,6 +138,24 @@ INSTANTIATE_TEST_SUITE_P(Cases, CliLimits, ::testing::ValuesIn(cases()),
                          [](const ::testing::TestParamInfo<Refused>& info) {
                            return info.param.name;
                          });
+
+TEST(CliLimits, ADomainThinnerThanItsCellsIsAnInputErrorNotAnInternalOne) {
+  // A closed tetrahedron 0.016 thick in a box of 2.2 (a mutant of
+  // cgal_wedge.off found by fuzz/cli_campaign.py): no cell's centre lies
+  // inside it (nor at 0.01: its faces meet at about a degree). It was exit 3.
+  ScratchDir dir;
+  const std::string off = dir.write("thin.off",
+                                    "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n"
+                                    "0.0032586249615044064 -1 -0.016375682947558277\n"
+                                    "3 0 1 2\n3 2 1 3\n3 0 2 3\n3 1 0 3\n");
+  const CliRun run = run_cli("thin.off -o thin.mesh -q", dir.path());
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_EQ(run.output.rfind("rdmesh: error: thin.off: no tetrahedron has its centre inside", 0),
+            0u)
+      << run.output;
+  EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << run.output;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("thin.mesh")));
+}
 
 TEST(CliLimits, SharedJunkPlyIsRefused) {
   RDMESH_REQUIRE_SHARED_DATA(junk, "bad/junk.ply");
