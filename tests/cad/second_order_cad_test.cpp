@@ -46,7 +46,7 @@ TEST_P(SecondOrderCad, NodesOnTheBRepJacobiansPositiveVolumeCloser) {
     const int v = p2.edge_mid_nodes[e];
     curve_nodes.insert(v);
     const CurveId id = p2.edge_curve[e];
-    const CurveInfo& info = oracle->curves()[id.value - 1];
+    const CurveInfo info = oracle->curves()[id.value - 1];  // curves() returns a copy
     const Curve& c = oracle->curve(id);
     const Point3 q = c.point(c.closest(p2.vertices[v], info.t_begin, info.t_end));
     off_curve += distance(q, p2.vertices[v]) > tol;
