@@ -57,7 +57,7 @@ TEST(CadBadFiles, AReaderThatLoopsIsStoppedWithinSecondsOnASmallFile) {
   // One byte of gmsh_crack1.brep's shape section replaced (a campaign of
   // fuzz/cli_campaign.py found it): OpenCASCADE's BRepTools_ShapeSet::
   // ReadGeometry then loops on its failed stream. The isolated read's default
-  // limit follows the file's size (5 s plus 20 s per MB), not a fixed minute.
+  // limit follows the file's size (10 s plus 20 s per MB), not a fixed minute.
   RDMESH_REQUIRE_SHARED_DATA(crack, "brep/gmsh_crack1.brep");
   std::ifstream in(crack, std::ios::binary);
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -72,9 +72,9 @@ TEST(CadBadFiles, AReaderThatLoopsIsStoppedWithinSecondsOnASmallFile) {
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_EQ(run.exit_code, 2) << run.output;
-  EXPECT_NE(run.output.find("did not finish within 5 s"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("did not finish within 10 s"), std::string::npos) << run.output;
   EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << run.output;
-  EXPECT_LT(seconds, 15.0);
+  EXPECT_LT(seconds, 25.0);
   EXPECT_EQ(scratch.entries(), 0u);
 }
 
