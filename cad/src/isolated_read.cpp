@@ -282,14 +282,14 @@ void apply_limits(const CadOptions& options, double seconds) {
 #endif
 }
 
-[[noreturn]] void run_child(int fd, pid_t parent, const std::string& path,
+[[noreturn]] void run_child(int fd, pid_t parent, const std::string& path, double limit_seconds,
                             const std::function<ReadShape()>& read, const CadOptions& options) {
 #if defined(__linux__)
   ::prctl(PR_SET_PDEATHSIG, SIGKILL);  // the parent gone, so is the child
 #endif
   if (::getppid() != parent) ::_exit(3);  // it went before the line above
   detach_files(fd);
-  apply_limits(options, time_limit(options, path));
+  apply_limits(options, limit_seconds);
   try {
     std::string message;
     try {
@@ -387,8 +387,11 @@ ReadShape read_in_child(const std::string& path, const std::string& format,
   return read();
 #else
   const std::string cannot = "cannot read the file: the " + format + " reader ";
-  const std::string timed_out = cannot + "did not finish within " +
-                                seconds(time_limit(options, path)) + " s (malformed file?)";
+  // Once: the file's size sets it, and the message, the child's CPU limit and
+  // the parent's wait must agree.
+  const double limit_seconds = time_limit(options, path);
+  const std::string timed_out =
+      cannot + "did not finish within " + seconds(limit_seconds) + " s (malformed file?)";
   int fds[2];
   if (::pipe(fds) != 0) return read();  // no isolation possible: read here
   FdGuard in{fds[0]}, out{fds[1]};
@@ -396,12 +399,12 @@ ReadShape read_in_child(const std::string& path, const std::string& format,
   const pid_t parent = ::getpid();
   const pid_t pid = ::fork();
   if (pid < 0) return read();
-  if (pid == 0) run_child(fds[1], parent, path, read, options);
+  if (pid == 0) run_child(fds[1], parent, path, limit_seconds, read, options);
   ChildGuard child(pid);
   ::close(out.fd);
   out.fd = -1;
   std::string bytes;
-  const auto limit = std::chrono::duration<double>(time_limit(options, path));
+  const auto limit = std::chrono::duration<double>(limit_seconds);
   if (!drain(in.fd, bytes,
              start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(limit))) {
     throw InputError(path, timed_out);
