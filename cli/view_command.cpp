@@ -5,18 +5,19 @@
 #include <filesystem>
 #include <string>
 
-#include "arguments.h"
-#include "picture_args.h"
+#include "rdmesh/arguments.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/picture.h"
+#include "rdmesh/picture_args.h"
 #include "rdmesh/view_mesh.h"
 
 namespace rdmesh::cli {
 namespace {
 
-int view(const std::string& input, PictureArgs& args, bool quiet) {
+int view(const std::string& input, run::PictureArgs& args, bool quiet) {
   if (args.path.empty()) args.path = std::filesystem::path(input).stem().string() + ".png";
-  const view::PictureOptions options = picture_options(args, input);  // bad options: before reading
+  const view::PictureOptions options =
+      run::picture_options(args, input);  // bad options: before reading
   const view::ViewMesh mesh = view::read_view_mesh(input);
   view::render_png(mesh, options, args.path);
   if (!quiet) {
@@ -32,16 +33,16 @@ int view(const std::string& input, PictureArgs& args, bool quiet) {
 int run_view_command(int argc, char** argv) {
   CLI::App app{"rdmesh view: a picture of a tetrahedral mesh (.msh, .mesh or .vtu)", "rdmesh view"};
   std::string input;
-  PictureArgs args;
+  run::PictureArgs args;
   bool quiet = false;
   app.add_option("mesh", input, "Mesh file: .msh (Gmsh 4.1 or 2.2 ASCII), .mesh (Medit) or .vtu")
       ->required();
   app.add_option("-o,--output", args.path, "The picture, .png (default: MESH-stem.png)");
-  add_picture_options(app, args);
+  run::add_picture_options(app, args);
   app.add_flag("-q,--quiet", quiet, "No summary line");
-  if (const auto flag = single_dash_option(argc, argv, "oqh")) {
+  if (const auto flag = run::single_dash_option(argc, argv, "oqh")) {
     std::fprintf(stderr, "rdmesh: error: %s\n",
-                 unknown_single_dash_message(*flag, "rdmesh view").c_str());
+                 run::unknown_single_dash_message(*flag, "rdmesh view").c_str());
     return 2;
   }
   try {
@@ -49,7 +50,8 @@ int run_view_command(int argc, char** argv) {
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "rdmesh: error: %s\n", parse_error_message(e, app, "rdmesh view").c_str());
+    std::fprintf(stderr, "rdmesh: error: %s\n",
+                 run::parse_error_message(e, app, "rdmesh view").c_str());
     return 2;
   }
   try {

@@ -3,7 +3,7 @@
 #include "rdmesh/cad_oracle.h"
 #include "rdmesh/triangle_mesh_oracle.h"
 
-namespace rdmesh::cli {
+namespace rdmesh::run {
 namespace {
 
 /// The volumes only: BRepGProp's face areas cost as much as the rest of the
@@ -45,4 +45,4 @@ std::optional<ModelMeasures> model_measures(const DomainOracle& oracle, bool sur
   return std::nullopt;
 }
 
-}  // namespace rdmesh::cli
+}  // namespace rdmesh::run

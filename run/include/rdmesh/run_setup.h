@@ -1,53 +1,57 @@
-// The CLI's pieces between argument parsing and meshing: options, input
-// loading by extension, criteria resolution (bbox defaults < file < options)
-// and the run report.
+// The pieces of a meshing run between argument parsing and meshing, shared by
+// the CLI and the Python module: options and their CLI11 parser, input loading
+// by extension, criteria resolution (bbox defaults < file < options) and the
+// run report.
 #pragma once
 
 #include <CLI/CLI.hpp>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <vector>
 
-#include "picture_args.h"
 #include "rdmesh/criteria.h"
 #include "rdmesh/domain_file.h"
+#include "rdmesh/fem_options.h"
 #include "rdmesh/fidelity.h"
 #include "rdmesh/mesh_writers.h"
 #include "rdmesh/mesher.h"
 #include "rdmesh/oracle.h"
+#include "rdmesh/picture_args.h"
 #include "rdmesh/quality_report.h"
-#include "fem_options.h"
 
-namespace rdmesh::cli {
+namespace rdmesh::run {
 
 struct Options {
   std::string command_line;  ///< argv quoted for a shell, for the report
   std::string input;
   std::string output;  ///< default: the input's stem + ".msh" in the current directory
-  std::optional<double> size, edge_size, facet_size, cell_size, facet_distance, facet_angle, radius_edge,
-      min_size;
+  std::optional<double> size, edge_size, facet_size, cell_size, facet_distance, facet_angle,
+      radius_edge, min_size;
   double max_elements = kDefaultMaxElements;  ///< --max-elements: limit of the size estimate
-  bool no_exude = false;                     ///< --no-exude
-  double exude_time_limit = 0;               ///< --exude-time-limit SECONDS, 0 = none
-  std::string report;  ///< JSON report path, empty = none
+  bool no_exude = false;                      ///< --no-exude
+  double exude_time_limit = 0;                ///< --exude-time-limit SECONDS, 0 = none
+  std::string report;                         ///< JSON report path, empty = none
   bool quiet = false;
-  bool heal = false;  ///< --heal: OpenCASCADE shape healing of CAD input
+  bool heal = false;          ///< --heal: OpenCASCADE shape healing of CAD input
   double feature_angle = 60;  ///< --feature-angle DEG: sharp-edge threshold of triangle-mesh input
   FeatureMethod features = FeatureMethod::kProtectingBalls;  ///< --features protect|refine
-  bool surface_only = false;  ///< --surface-only: triangles only, open meshes accepted
-  PictureArgs picture;        ///< --picture FILE.png and its options
-  double time_limit = 0;      ///< --time-limit SECONDS: stop refinement, 0 = none
-  bool keep_bad_mesh = false; ///< --keep-bad-mesh: write a mesh that failed the fidelity check
-  bool full_check = false;    ///< --check full (or --report): measure every distance
-  FemOptions fem;             ///< --order (fem_options.h)
-  WriteOptions write;         ///< --binary / --ascii, --format msh41|msh22
+  bool surface_only = false;   ///< --surface-only: triangles only, open meshes accepted
+  PictureArgs picture;         ///< --picture FILE.png and its options
+  double time_limit = 0;       ///< --time-limit SECONDS: stop refinement, 0 = none
+  bool keep_bad_mesh = false;  ///< --keep-bad-mesh: write a mesh that failed the fidelity check
+  bool full_check = false;     ///< --check full (or --report): measure every distance
+  FemOptions fem;              ///< --order (fem_options.h)
+  WriteOptions write;          ///< --binary / --ascii, --format msh41|msh22
 };
 
+/// Every option of a meshing run, --order and the entity sizes (add_fem_options) included.
 void add_options(CLI::App& app, Options& opt);
 
 /// The input's oracle and the criteria its file suggests.
 struct LoadedInput {
-  std::unique_ptr<DomainOracle> oracle;
+  std::shared_ptr<DomainOracle> oracle;  ///< shared: the Python module lends its oracles
   CriteriaHints hints;
 };
 
@@ -82,20 +86,32 @@ struct RunTimes {
 
 /// The report: version, command line, the input's SHA-256, every criterion as used (varying
 /// sizes as their min and max over the oracle's box), the quality (with the CAD model's
-/// patch colours), the fidelity, the phases and the second-order results.
-void write_json_report(const Options& opt, const Criteria& criteria, const DomainOracle& oracle,
-                       const RefinementStats& stats, const ExudationStats& exudation,
-                       const QualityReport& quality, const std::optional<FidelityReport>& fidelity,
-                       const RunTimes& times, const FemResults& fem = {});
+/// patch colours), the fidelity, the phases and the second-order results. "input_sha256" is
+/// null when the input is no file (a Python callable or oracle).
+nlohmann::json report_json(const Options& opt, const Criteria& criteria, const DomainOracle& oracle,
+                           const RefinementStats& stats, const ExudationStats& exudation,
+                           const QualityReport& quality,
+                           const std::optional<FidelityReport>& fidelity, const RunTimes& times,
+                           const FemResults& fem = {});
 
-/// `wrote_mesh`: false when the fidelity check (or the time limit) kept the mesh from being written.
+/// Throws InputError naming `path` when the mesh cannot be written there as asked:
+/// an unknown extension, a binary Medit file. Before meshing.
+void check_output_format(const std::string& path, const WriteOptions& write);
+
+/// The run's warnings, one line each without the "rdmesh: warning: " prefix:
+/// patches without triangles, the guard fired, protection conflicts, feature
+/// edges left out.
+std::vector<std::string> run_warnings(const RefinementStats& stats);
+
+/// `wrote_mesh`: false when the fidelity check (or the time limit) kept the mesh from being
+/// written.
 std::string format_run_summary(const Options& opt, const RefinementStats& stats,
                                const ExudationStats& exudation, const RunTimes& times,
                                bool wrote_mesh = true);
 
-}  // namespace rdmesh::cli
+}  // namespace rdmesh::run
 
-namespace rdmesh::cli {
+namespace rdmesh::run {
 /// INPUT's stem with the .msh extension, in the current directory.
 std::string default_output_path(const std::string& input);
-}  // namespace rdmesh::cli
+}  // namespace rdmesh::run

@@ -1,14 +1,14 @@
-#include "picture_args.h"
+#include "rdmesh/picture_args.h"
 
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
 
 #include "rdmesh/errors.h"
+#include "rdmesh/run_setup.h"
 #include "rdmesh/view_conversion.h"
-#include "run_setup.h"
 
-namespace rdmesh::cli {
+namespace rdmesh::run {
 
 void add_picture_options(CLI::App& app, PictureArgs& args) {
   app.add_option("--view", args.view, "Picture: view direction iso, x, y or z (default iso)");
@@ -38,4 +38,4 @@ void write_picture(const TetMesh& mesh, const PictureArgs& args, const std::stri
   view::render_png(to_view_mesh(mesh), picture_options(args, input), args.path);
 }
 
-}  // namespace rdmesh::cli
+}  // namespace rdmesh::run

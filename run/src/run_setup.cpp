@@ -1,4 +1,4 @@
-#include "run_setup.h"
+#include "rdmesh/run_setup.h"
 
 #include <unistd.h>
 
@@ -13,8 +13,8 @@
 #include <sstream>
 #include <string>
 
-#include "arguments.h"
 #include "cad_sizes.h"
+#include "rdmesh/arguments.h"
 #include "rdmesh/atomic_file.h"
 #include "rdmesh/cad_oracle.h"
 #include "rdmesh/errors.h"
@@ -23,13 +23,17 @@
 #include "rdmesh/sha256.h"
 #include "rdmesh/triangle_mesh_oracle.h"
 
-namespace rdmesh::cli {
+namespace rdmesh::run {
 namespace fs = std::filesystem;
 
 void add_options(CLI::App& app, Options& opt) {
-  app.add_option("input", opt.input, "Domain: .json implicit domain file, a .step/.stp/.brep/.iges/.igs CAD model, or a closed .off/.stl/.obj/.ply triangle mesh")->required();
-  app.add_option("-o,--output", opt.output,
-                 "Output mesh: .mesh (Medit), .msh (Gmsh 4.1) or .vtu (VTK); default INPUT-stem.msh");
+  app.add_option("input", opt.input,
+                 "Domain: .json implicit domain file, a .step/.stp/.brep/.iges/.igs CAD model, or "
+                 "a closed .off/.stl/.obj/.ply triangle mesh")
+      ->required();
+  app.add_option(
+      "-o,--output", opt.output,
+      "Output mesh: .mesh (Medit), .msh (Gmsh 4.1) or .vtu (VTK); default INPUT-stem.msh");
   app.add_option("--size", opt.size,
                  "Target size h: edge, facet and cell size = h, facet distance h/10")
       ->check(finite_number());
@@ -101,8 +105,8 @@ void add_options(CLI::App& app, Options& opt) {
   app.add_option("--check", opt.full_check,
                  "Fidelity check: 'cheap' (volumes, patches, curve chains; default) or 'full' "
                  "(also every boundary triangle's distance to its surface; also with --report)")
-      ->transform(CLI::CheckedTransformer(std::map<std::string, bool>{{"cheap", false}, {"full", true}},
-                                          CLI::ignore_case));
+      ->transform(CLI::CheckedTransformer(
+          std::map<std::string, bool>{{"cheap", false}, {"full", true}}, CLI::ignore_case));
   auto* binary = app.add_flag_callback(
       "--binary", [&opt] { opt.write.encoding = Encoding::binary; },
       "Binary output: .msh 4.1 binary, .vtu zlib-compressed (default: binary above 1e6 "
@@ -119,6 +123,7 @@ void add_options(CLI::App& app, Options& opt) {
   app.add_option("--picture", opt.picture.path,
                  "Also write a picture of the mesh (.png): the boundary and a cut view");
   add_picture_options(app, opt.picture);
+  add_fem_options(app, opt.fem);
 }
 
 LoadedInput load_input(const Options& opt) {
@@ -136,7 +141,8 @@ LoadedInput load_input(const Options& opt) {
     return {std::move(cad), {}};
   }
   std::string ext = fs::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   if (ext == ".json") {
     LoadedDomain d = load_domain_file(path);
     return {std::move(d.oracle), std::move(d.hints)};
@@ -150,12 +156,14 @@ LoadedInput load_input(const Options& opt) {
     } catch (const InputError& e) {
       const std::string what = e.what();
       if (opt.surface_only || what.find("not closed") == std::string::npos) throw;
-      throw InputError(what + " (a volume needs closed surfaces; --surface-only meshes an open "
-                              "surface without its volume)");
+      throw InputError(what +
+                       " (a volume needs closed surfaces; --surface-only meshes an open "
+                       "surface without its volume)");
     }
   }
-  throw InputError(path, "unknown input extension '" + ext +
-                               "' (expected .json, .step, .stp, .brep, .iges, .igs, .off, .stl, .obj or .ply)");
+  throw InputError(
+      path, "unknown input extension '" + ext +
+                "' (expected .json, .step, .stp, .brep, .iges, .igs, .off, .stl, .obj or .ply)");
 }
 
 namespace {
@@ -332,16 +340,19 @@ nlohmann::json criteria_json(const Options& opt, const Criteria& criteria, const
 
 }  // namespace
 
-void write_json_report(const Options& opt, const Criteria& criteria, const DomainOracle& oracle,
-                       const RefinementStats& stats, const ExudationStats& exudation,
-                       const QualityReport& quality, const std::optional<FidelityReport>& fidelity,
-                       const RunTimes& times, const FemResults& fem) {
+nlohmann::json report_json(const Options& opt, const Criteria& criteria, const DomainOracle& oracle,
+                           const RefinementStats& stats, const ExudationStats& exudation,
+                           const QualityReport& quality,
+                           const std::optional<FidelityReport>& fidelity, const RunTimes& times,
+                           const FemResults& fem) {
   nlohmann::json j = to_json(quality);
   j.update(fem_json(fem));
   j["rdmesh_version"] = RDMESH_VERSION;
   j["command_line"] = opt.command_line;
   j["input"] = opt.input;
-  j["input_sha256"] = sha256_of_file(opt.input);
+  // A Python run's input may be no file (a callable, an rdmesh.Oracle).
+  j["input_sha256"] = fs::is_regular_file(opt.input) ? nlohmann::json(sha256_of_file(opt.input))
+                                                     : nlohmann::json(nullptr);
   j["output"] = opt.output;
   j["criteria"] = criteria_json(opt, criteria, oracle.bounding_box());
   if (const auto* cad = dynamic_cast<const CadOracle*>(&oracle)) {
@@ -361,12 +372,10 @@ void write_json_report(const Options& opt, const Criteria& criteria, const Domai
   j["guard"] = {{"fired", stats.guard_fired()},
                 {"rejected_points", stats.guard_rejections},
                 {"features", stats.guard_features}};
-  j["protection"] = {{"balls", stats.protecting_balls},
-                     {"min_ball_radius", stats.min_ball_radius},
-                     {"restarts", stats.protection_restarts},
-                     {"conflicts", stats.protection_conflicts},
-                     {"features", stats.protection_features},
-                     {"seconds", stats.seconds_protect}};
+  j["protection"] = {
+      {"balls", stats.protecting_balls},       {"min_ball_radius", stats.min_ball_radius},
+      {"restarts", stats.protection_restarts}, {"conflicts", stats.protection_conflicts},
+      {"features", stats.protection_features}, {"seconds", stats.seconds_protect}};
   j["unmeshed_feature_edges"] = stats.unmeshed_feature_edges;
   j["missing_patches"] = nlohmann::json::array();
   for (const PatchId& p : stats.missing_patches) j["missing_patches"].push_back(p.value);
@@ -388,7 +397,47 @@ void write_json_report(const Options& opt, const Criteria& criteria, const Domai
                   {"extract", stats.seconds_extract},
                   {"write", times.write},
                   {"report", times.report}};
-  write_file_atomically(opt.report, [&](std::ostream& out) { out << j.dump(2) << '\n'; });
+  return j;
+}
+
+void check_output_format(const std::string& path, const WriteOptions& write) {
+  try {
+    (void)writes_binary(TetMesh{}, format_from_path(path), write);
+  } catch (const InputError& e) {
+    if (!e.file().empty()) throw;
+    throw InputError(path, e.what());
+  }
+}
+
+std::vector<std::string> run_warnings(const RefinementStats& stats) {
+  std::vector<std::string> out;
+  for (const PatchId& patch : stats.missing_patches) {
+    out.push_back("patch " + std::to_string(patch.value) +
+                  " has no triangle in the mesh (too small for the sizes, or missed by the "
+                  "initial points)");
+  }
+  const auto joined = [](const std::vector<std::string>& items) {
+    std::string s;
+    for (const std::string& f : items) s += (s.empty() ? "" : "; ") + f;
+    return s;
+  };
+  if (stats.guard_fired()) {
+    out.push_back("the minimum-size guard refused " + std::to_string(stats.guard_rejections) +
+                  " refinement points (" + joined(stats.guard_features) +
+                  "); the input may violate the angle hypothesis of RR-7912 (features meeting "
+                  "below 90 degrees)");
+  }
+  if (stats.protection_conflicts > 0) {
+    out.push_back(std::to_string(stats.protection_conflicts) +
+                  " protecting balls could not be made small enough (" +
+                  joined(stats.protection_features) +
+                  "): features closer than the minimum size; the mesh may miss them there");
+  }
+  if (stats.unmeshed_feature_edges > 0) {
+    out.push_back(std::to_string(stats.unmeshed_feature_edges) +
+                  " feature edges are not edges of the mesh");
+  }
+  return out;
 }
 
 std::string format_run_summary(const Options& opt, const RefinementStats& stats,
@@ -397,18 +446,19 @@ std::string format_run_summary(const Options& opt, const RefinementStats& stats,
   std::ostringstream s;
   s.setf(std::ios::fixed);
   s.precision(2);
-  s << "refinement: " << stats.initial_points << " initial points, "
-    << stats.inserted_edge_centers << " edge centers, " << stats.inserted_facet_centers << " facet centers, " << stats.inserted_cell_centers
-    << " cell centers, " << stats.encroachments << " encroachments\n";
+  s << "refinement: " << stats.initial_points << " initial points, " << stats.inserted_edge_centers
+    << " edge centers, " << stats.inserted_facet_centers << " facet centers, "
+    << stats.inserted_cell_centers << " cell centers, " << stats.encroachments
+    << " encroachments\n";
   if (stats.protecting_balls > 0) {
     s.precision(3);
-    s << "protection: " << stats.protecting_balls << " balls, smallest radius "
-      << std::defaultfloat << stats.min_ball_radius << std::fixed << ", " << stats.protection_restarts
-      << " restarts, " << stats.protection_conflicts << " conflicts left\n";
+    s << "protection: " << stats.protecting_balls << " balls, smallest radius " << std::defaultfloat
+      << stats.min_ball_radius << std::fixed << ", " << stats.protection_restarts << " restarts, "
+      << stats.protection_conflicts << " conflicts left\n";
     s.precision(2);
   }
-  s << "guard: " << (stats.guard_fired() ? "FIRED" : "not fired") << " ("
-    << stats.guard_rejections << " points refused)\n";
+  s << "guard: " << (stats.guard_fired() ? "FIRED" : "not fired") << " (" << stats.guard_rejections
+    << " points refused)\n";
   if (opt.surface_only) {
     s << "exudation: none (surface only)\n";
   } else if (exudation.ran) {
@@ -440,4 +490,4 @@ std::string format_run_summary(const Options& opt, const RefinementStats& stats,
   return s.str();
 }
 
-}  // namespace rdmesh::cli
+}  // namespace rdmesh::run

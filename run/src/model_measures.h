@@ -7,7 +7,7 @@
 #include "rdmesh/fidelity.h"
 #include "rdmesh/oracle.h"
 
-namespace rdmesh::cli {
+namespace rdmesh::run {
 
 /// Volumes per subdomain of a CadOracle (BRepGProp; the mesh's patch areas
 /// serve the tolerance), the enclosed volume and the areas per patch of a
@@ -15,4 +15,4 @@ namespace rdmesh::cli {
 /// measure to compare with). With `surface_only`, no volume.
 std::optional<ModelMeasures> model_measures(const DomainOracle& oracle, bool surface_only);
 
-}  // namespace rdmesh::cli
+}  // namespace rdmesh::run

@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-namespace rdmesh::cli {
+namespace rdmesh::run {
 
 /// The first argument that looks like a Gmsh-style single-dash option
 /// (`-optimize`, `-order`, `-3`... but not a number after an option, `--size -0.5`, nor the short
@@ -31,4 +31,4 @@ std::string command_line_text(int argc, const char* const* argv);
 /// Validator of a finite number, with the option's own wording.
 CLI::Validator finite_number();
 
-}  // namespace rdmesh::cli
+}  // namespace rdmesh::run

@@ -1,4 +1,4 @@
-#include "fem_options.h"
+#include "rdmesh/fem_options.h"
 
 #include <charconv>
 #include <fstream>
@@ -7,7 +7,7 @@
 #include "rdmesh/errors.h"
 #include "rdmesh/mesh_writers.h"
 
-namespace rdmesh::cli {
+namespace rdmesh::run {
 
 void add_fem_options(CLI::App& app, FemOptions& opt) {
   app.add_option("--order", opt.order,
@@ -147,4 +147,4 @@ std::string format_fem_summary(const FemResults& results) {
   return s.str();
 }
 
-}  // namespace rdmesh::cli
+}  // namespace rdmesh::run

@@ -8,7 +8,7 @@
 #include "rdmesh/picture.h"
 #include "rdmesh/tet_mesh.h"
 
-namespace rdmesh::cli {
+namespace rdmesh::run {
 
 struct PictureArgs {
   std::string path;  ///< the PNG to write; empty: none
@@ -28,4 +28,4 @@ view::PictureOptions picture_options(const PictureArgs& args, const std::string&
 /// Writes the picture of `mesh` to args.path (atomically).
 void write_picture(const TetMesh& mesh, const PictureArgs& args, const std::string& input);
 
-}  // namespace rdmesh::cli
+}  // namespace rdmesh::run

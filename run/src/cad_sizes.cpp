@@ -11,13 +11,13 @@
 #include <optional>
 #include <vector>
 
-namespace rdmesh::cli {
+namespace rdmesh::run {
 namespace {
 
-constexpr double kPerThickness = 0.5;  ///< size / thickness near a slender part
-constexpr double kGrading = 0.5;       ///< size growth per unit of distance from it
-constexpr double kFloor = 1.0 / 50;    ///< the sizes go no lower than this fraction of the size
-constexpr double kDistancePerSize = 0.1;           ///< facet distance / facet size, as by default
+constexpr double kPerThickness = 0.5;     ///< size / thickness near a slender part
+constexpr double kGrading = 0.5;          ///< size growth per unit of distance from it
+constexpr double kFloor = 1.0 / 50;       ///< the sizes go no lower than this fraction of the size
+constexpr double kDistancePerSize = 0.1;  ///< facet distance / facet size, as by default
 constexpr double kMinSizePerThickness = 1.0 / 50;  ///< default minimum size / thinnest solid
 constexpr double kMinSizeVolumeFraction = 1e-6;    ///< smaller solids do not set it
 
@@ -158,4 +158,4 @@ int follow_thickness(const CadOracle& cad, Criteria& criteria, FollowedDefaults 
   return static_cast<int>(thin.size());
 }
 
-}  // namespace rdmesh::cli
+}  // namespace rdmesh::run

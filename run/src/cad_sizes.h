@@ -4,7 +4,7 @@
 #include "rdmesh/cad_oracle.h"
 #include "rdmesh/criteria.h"
 
-namespace rdmesh::cli {
+namespace rdmesh::run {
 
 /// Where a curved face has less material behind it than twice the size
 /// (CadOracle::curved_thickness: a rod, a pin, a tube's wall), the edge, facet
@@ -27,4 +27,4 @@ struct FollowedDefaults {
 };
 int follow_thickness(const CadOracle& cad, Criteria& criteria, FollowedDefaults defaults);
 
-}  // namespace rdmesh::cli
+}  // namespace rdmesh::run

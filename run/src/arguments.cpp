@@ -1,4 +1,4 @@
-#include "arguments.h"
+#include "rdmesh/arguments.h"
 
 #include <cctype>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <map>
 #include <vector>
 
-namespace rdmesh::cli {
+namespace rdmesh::run {
 namespace {
 
 /// What each option accepts, in the words of the error messages.
@@ -172,4 +172,4 @@ CLI::Validator finite_number() {
       "NUMBER");
 }
 
-}  // namespace rdmesh::cli
+}  // namespace rdmesh::run

@@ -15,7 +15,7 @@
 #include "rdmesh/second_order.h"
 #include "rdmesh/tet_mesh.h"
 
-namespace rdmesh::cli {
+namespace rdmesh::run {
 
 struct FemOptions {
   int order = 1;                     ///< --order 1|2: 2 = 10-node tetrahedra on the exact geometry
@@ -56,4 +56,4 @@ nlohmann::json fem_json(const FemResults& results);
 /// Summary lines (empty when no FEM option was used).
 std::string format_fem_summary(const FemResults& results);
 
-}  // namespace rdmesh::cli
+}  // namespace rdmesh::run

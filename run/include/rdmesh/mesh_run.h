@@ -1,0 +1,58 @@
+// One meshing run as the command line does it, shared by the CLI and the
+// Python module: generate_mesh on a loaded input with the resolved criteria,
+// the quality measures and the fidelity check, and the JSON report. Writing
+// the mesh, exit codes and printing stay with the caller.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rdmesh/criteria.h"
+#include "rdmesh/fem_options.h"
+#include "rdmesh/fidelity.h"
+#include "rdmesh/mesher.h"
+#include "rdmesh/quality_report.h"
+#include "rdmesh/run_setup.h"
+
+namespace rdmesh::run {
+
+struct MeshRun {
+  Criteria criteria;
+  MeshResult result;
+  QualityReport quality;
+  std::optional<FidelityReport> fidelity;  ///< CAD models and triangle meshes only
+  RunTimes times;                          ///< `write` is the caller's to fill in
+  FemResults fem;  ///< the caller's apply_fem_options, before writing (none on a failed run)
+
+  /// The time limit stopped refinement or the mesh failed the fidelity check.
+  bool failed() const { return result.stats.time_limit_reached || (fidelity && !fidelity->passed); }
+};
+
+/// Meshes `input` with `criteria` (resolve_criteria) and `base`'s progress
+/// callback; the other MeshOptions come from `opt` (features, surface only,
+/// exudation, time limit). Measures every distance when opt.full_check or a
+/// report is asked for, then checks fidelity (model_measures), announced to the
+/// callback as the phase "checking the mesh against the model". Throws what
+/// generate_mesh throws; a failed check is not an exception (MeshRun::failed).
+MeshRun mesh_loaded(const Options& opt, const LoadedInput& input, const Criteria& criteria,
+                    MeshOptions base = {});
+
+/// The one-line reason of a failed run (time limit or fidelity), without the
+/// input's name: "the mesh does not match the model: ...".
+std::string failure_reason(const Options& opt, const MeshRun& run);
+
+/// The JSON report of a run (what --report writes) on `oracle`, the input's.
+nlohmann::json run_report(const Options& opt, const DomainOracle& oracle, const MeshRun& run);
+
+/// apply_fem_options on the run's mesh (second order, partitions; the sizes
+/// asked measured), announced to `options.progress`; fills run.fem.
+void apply_fem(const Options& opt, const std::vector<EntitySize>& sizes, const DomainOracle& oracle,
+               const MeshOptions& options, MeshRun& run);
+
+/// Tells `options.progress` (if any) that `phase` starts: a Progress with that
+/// phase and zero counts, as the mesher announces its own phases.
+void announce(const MeshOptions& options, const std::string& phase);
+
+}  // namespace rdmesh::run

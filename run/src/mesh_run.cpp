@@ -1,0 +1,66 @@
+#include "rdmesh/mesh_run.h"
+
+#include <chrono>
+
+#include "model_measures.h"
+#include "rdmesh/number_text.h"
+
+namespace rdmesh::run {
+
+MeshRun mesh_loaded(const Options& opt, const LoadedInput& input, const Criteria& criteria,
+                    MeshOptions base) {
+  MeshRun run;
+  run.criteria = criteria;
+  base.exudation = exudation_options(opt);
+  base.features = opt.features;
+  base.surface_only = opt.surface_only;
+  base.time_limit_seconds = opt.time_limit;
+  run.result = generate_mesh(*input.oracle, criteria, base);
+
+  // The cheap measures and the fidelity check: a mesh that does not match the
+  // model is not written (unless asked).
+  const auto t = std::chrono::steady_clock::now();
+  announce(base, "checking the mesh against the model");
+  const bool full = opt.full_check || !opt.report.empty();
+  run.quality = measure_quality(run.result.mesh, full ? input.oracle.get() : nullptr);
+  if (const auto model = model_measures(*input.oracle, opt.surface_only)) {
+    run.fidelity =
+        check_fidelity(run.quality, *model, input.oracle->patches(), input.oracle->curves(),
+                       patch_facet_distances(run.result.mesh, criteria.facet_distance),
+                       run.result.stats.curves_below_min_size);
+  }
+  run.times.report = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+  return run;
+}
+
+std::string failure_reason(const Options& opt, const MeshRun& run) {
+  if (run.result.stats.time_limit_reached) {
+    return "refinement stopped at the time limit (" + short_number(opt.time_limit) + " s) with " +
+           std::to_string(run.result.stats.elements_left) + " elements still queued";
+  }
+  if (run.fidelity && !run.fidelity->passed) {
+    return "the mesh does not match the model: " + summarize_problems(*run.fidelity);
+  }
+  return {};
+}
+
+nlohmann::json run_report(const Options& opt, const DomainOracle& oracle, const MeshRun& run) {
+  return report_json(opt, run.criteria, oracle, run.result.stats, run.result.exudation, run.quality,
+                     run.fidelity, run.times, run.fem);
+}
+
+void apply_fem(const Options& opt, const std::vector<EntitySize>& sizes, const DomainOracle& oracle,
+               const MeshOptions& options, MeshRun& run) {
+  if (opt.fem.order == 2) announce(options, "making second-order elements");
+  if (opt.fem.order != 2 && opt.fem.partitions > 0) announce(options, "partitioning");
+  run.fem = apply_fem_options(opt.fem, sizes, run.result.mesh, oracle);
+}
+
+void announce(const MeshOptions& options, const std::string& phase) {
+  if (!options.progress) return;
+  Progress p;
+  p.phase = phase.c_str();
+  options.progress(p);
+}
+
+}  // namespace rdmesh::run
