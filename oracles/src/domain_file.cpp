@@ -28,6 +28,7 @@ constexpr const char* kTopKeys[] = {"description",    "bbox",        "functions"
                                     "facet_distance", "facet_angle", "radius_edge"};
 constexpr const char* kSubdomainKeys[] = {"name", "inside", "outside"};
 constexpr const char* kCurveKeys[] = {"name", "x", "y", "z", "t", "points"};
+constexpr const char* kExternalCurveKeys[] = {"name", "external"};
 
 std::string one_line(std::string s) {
   for (char& c : s) {
@@ -46,7 +47,8 @@ std::string number_text(double v) {
 /// Reads one document; throws with the context of every problem.
 class Parser {
  public:
-  explicit Parser(std::string origin) : origin_(std::move(origin)) {}
+  Parser(std::string origin, const ExternalDefinitions* external)
+      : origin_(std::move(origin)), external_(external) {}
 
   LoadedDomain parse(const std::string& text) {
     checked([&] { detail::check_json_depth(text); }, "");
@@ -64,9 +66,10 @@ class Parser {
     LoadedDomain result;
     result.hints = parse_hints(doc, box.center());
     try {
-      result.oracle =
-          std::make_unique<ImplicitOracle>(box, functions_, std::move(subdomains), names_,
-                                           ImplicitOracle::Options{}, std::move(curves));
+      ImplicitOracle::Options options;
+      options.batch = batch_;
+      result.oracle = std::make_unique<ImplicitOracle>(box, functions_, std::move(subdomains),
+                                                       names_, options, std::move(curves));
     } catch (const InputError& e) {
       fail(e.what());
     }
@@ -144,6 +147,14 @@ class Parser {
     }
     for (const auto& item : fs.items()) {
       const std::string name = item.key();
+      if (external_ && item.value().is_object()) {
+        const ExternalFunction& f = external_function(item.value(), name);
+        functions_.push_back(f.point);
+        batch_.resize(functions_.size());
+        batch_.back() = f.batch;
+        names_.push_back(name);
+        continue;
+      }
       if (!item.value().is_string()) fail("function '" + name + "' must be an expression string");
       checked([&] { detail::check_expression_length(item.value().get<std::string>(), "it"); },
               "function '" + name + "': ");
@@ -154,6 +165,19 @@ class Parser {
       }
       names_.push_back(name);
     }
+  }
+
+  /// {"external": "KEY"}: the caller's function KEY.
+  const ExternalFunction& external_function(const Json& v, const std::string& name) const {
+    if (v.size() != 1 || !v.contains("external") || !v["external"].is_string()) {
+      fail("function '" + name + "' must be an expression string or {\"external\": KEY}");
+    }
+    const auto it = external_->functions.find(v["external"].get<std::string>());
+    if (it == external_->functions.end() || !it->second.point) {
+      fail("function '" + name + "': no external function '" + v["external"].get<std::string>() +
+           "'");
+    }
+    return it->second;
   }
 
   int function_index(const std::string& name, const std::string& subdomain,
@@ -236,6 +260,12 @@ class Parser {
       for (const auto& other : out) {
         if (other.name == name) fail("two curves are named '" + name + "'");
       }
+      if (external_ && c.contains("external")) {
+        check_keys(c, std::begin(kExternalCurveKeys), std::end(kExternalCurveKeys),
+                   "in curve '" + name + "'");
+        out.push_back(external_curve(c["external"], name));
+        continue;
+      }
       check_keys(c, std::begin(kCurveKeys), std::end(kCurveKeys), "in curve '" + name + "'");
       out.push_back(parse_curve(c, name));
     }
@@ -249,6 +279,26 @@ class Parser {
     }
     checked([&] { detail::check_distinct_curves(named, ranges, diagonal_); }, "");
     return out;
+  }
+
+  /// "external": "KEY": the caller's curve KEY, its length checked as a parametric one's.
+  ImplicitOracle::CurveSpec external_curve(const Json& key, const std::string& name) const {
+    const std::string where = "curve '" + name + "': ";
+    if (!key.is_string()) fail(where + "'external' must be a string");
+    const auto it = external_->curves.find(key.get<std::string>());
+    if (it == external_->curves.end() || !it->second.curve) {
+      fail(where + "no external curve '" + key.get<std::string>() + "'");
+    }
+    ImplicitOracle::CurveSpec spec = it->second;
+    spec.name = name;
+    const Curve& curve = *spec.curve;
+    checked(
+        [&] {
+          detail::check_curve_length([&curve](double t) { return curve.point(t); }, spec.t_begin,
+                                     spec.t_end, diagonal_);
+        },
+        where);
+    return spec;
   }
 
   ImplicitOracle::CurveSpec parse_curve(const Json& c, const std::string& name) const {
@@ -374,15 +424,22 @@ class Parser {
   }
 
   std::string origin_;
+  const ExternalDefinitions* external_;  ///< null: a domain file
   double diagonal_ = 0;  ///< of the bbox
   std::vector<ImplicitOracle::Function> functions_;
   std::vector<std::string> names_;
+  std::vector<ImplicitOracleOptions::BatchFunction> batch_;  ///< external functions' batches
 };
 
 }  // namespace
 
+LoadedDomain parse_domain_json(const std::string& text, const std::string& origin,
+                               const ExternalDefinitions& external) {
+  return Parser(origin, &external).parse(text);
+}
+
 LoadedDomain parse_domain_json(const std::string& text, const std::string& origin) {
-  return Parser(origin).parse(text);
+  return Parser(origin, nullptr).parse(text);
 }
 
 LoadedDomain load_domain_file(const std::string& path) {

@@ -74,6 +74,42 @@ std::vector<int> spread(const std::vector<Crossing>& crossings, const std::vecto
 
 }  // namespace
 
+template <class NodePoint>
+std::vector<std::uint64_t> ImplicitOracle::grid_states(int m, const NodePoint& node_point) const {
+  const bool batched = std::any_of(used_.begin(), used_.end(), [this](int f) {
+    return static_cast<std::size_t>(f) < options_.batch.size() && options_.batch[f];
+  });
+  if (!batched) return {};
+  std::vector<Point3> nodes;
+  nodes.reserve(static_cast<std::size_t>(m) * m * m);
+  for (int k = 0; k < m; ++k) {
+    for (int j = 0; j < m; ++j) {
+      for (int i = 0; i < m; ++i) nodes.push_back(node_point(i, j, k));
+    }
+  }
+  std::vector<std::uint64_t> states(nodes.size());
+  for (std::size_t n = 0; n < nodes.size(); ++n)
+    states[n] = box_.contains(nodes[n]) ? std::uint64_t{1} << kInBoxBit : 0;
+  std::vector<double> values;
+  for (const int f : used_) {
+    values.clear();
+    if (static_cast<std::size_t>(f) < options_.batch.size() && options_.batch[f]) {
+      options_.batch[f](nodes, values);
+      if (values.size() != nodes.size()) {
+        throw InputError("function '" + function_names_[f] + "' returned " +
+                         std::to_string(values.size()) + " values for " +
+                         std::to_string(nodes.size()) + " points");
+      }
+    } else {
+      for (const Point3& p : nodes) values.push_back(functions_[f](p));
+    }
+    for (std::size_t n = 0; n < nodes.size(); ++n) {
+      if (values[n] < 0) states[n] |= std::uint64_t{1} << f;
+    }
+  }
+  return states;
+}
+
 void ImplicitOracle::sample_box() {
   const int cells = options_.sampling_resolution;
   const int m = cells + 1;
@@ -89,11 +125,13 @@ void ImplicitOracle::sample_box() {
 
   std::vector<int> labels(static_cast<std::size_t>(m) * m * m);
   std::vector<int> count(n_sub + 1, 0);
+  const std::vector<std::uint64_t> states = grid_states(m, node_point);
   for (int k = 0; k < m; ++k) {
     for (int j = 0; j < m; ++j) {
       for (int i = 0; i < m; ++i) {
-        const int l = locate(node_point(i, j, k)).value;
-        labels[node_index(i, j, k)] = l;
+        const int node = node_index(i, j, k);
+        const int l = states.empty() ? locate(node_point(i, j, k)).value : label_of(states[node]);
+        labels[node] = l;
         ++count[l];
       }
     }

@@ -36,11 +36,13 @@
 // Every error is an InputError whose what() is one line "ORIGIN: problem".
 #pragma once
 
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
 
 #include "rdmesh/geometry.h"
+#include "rdmesh/implicit_oracle.h"
 #include "rdmesh/oracle.h"
 
 namespace rdmesh {
@@ -63,5 +65,25 @@ LoadedDomain load_domain_file(const std::string& path);
 /// Parses the JSON `text`; `origin` (usually the file name) prefixes every message.
 /// Throws InputError.
 LoadedDomain parse_domain_json(const std::string& text, const std::string& origin);
+
+/// Functions and curves given as code instead of text (the Python module's
+/// callables). Only parse_domain_json's third argument accepts them: there a
+/// function's value may be {"external": "KEY"} instead of an expression, and a
+/// curve may be {"name": ..., "external": "KEY"} instead of "x"/"y"/"z"/"t" or
+/// "points"; KEY names an entry below. Every other rule of the file applies
+/// (limits, the box check, curve lengths and overlaps). Domain files never
+/// accept them.
+struct ExternalFunction {
+  ImplicitOracle::Function point;              ///< required
+  ImplicitOracleOptions::BatchFunction batch;  ///< optional: the box sampling's grid at once
+};
+
+struct ExternalDefinitions {
+  std::map<std::string, ExternalFunction> functions;
+  std::map<std::string, ImplicitCurveSpec> curves;  ///< the spec's name is the document's
+};
+
+LoadedDomain parse_domain_json(const std::string& text, const std::string& origin,
+                               const ExternalDefinitions& external);
 
 }  // namespace rdmesh

@@ -51,6 +51,14 @@ struct ImplicitOracleOptions {
   /// Grid cells per box axis used to discover patches, their connected
   /// components and the initial points. Cost: (n+1)^3 evaluations of every function.
   int sampling_resolution = 48;
+  /// Optional batch evaluation of function k (indexed as the constructor's
+  /// `functions`): fills `out` with the values at `points`, the values the
+  /// function gives point by point. The box sampling labels its grid through it,
+  /// one call per function; an empty entry (or vector) evaluates point by point.
+  /// The Python module passes numpy-vectorised callables this way.
+  using BatchFunction =
+      std::function<void(const std::vector<Point3>& points, std::vector<double>& out)>;
+  std::vector<BatchFunction> batch;
 };
 
 /// A sharp-feature curve declared to ImplicitOracle: `curve` restricted to
@@ -140,6 +148,10 @@ class ImplicitOracle final : public DomainOracle {
   std::optional<Point3> project_on_crease(const Point3& p, int k, int l, int a, int b) const;
   Point3 gradient(int k, const Point3& p) const;
   void sample_box();
+  /// The state of every grid node (m per axis, in node order) through the
+  /// batch functions; empty when no used function has one.
+  template <class NodePoint>
+  std::vector<std::uint64_t> grid_states(int m, const NodePoint& node_point) const;
   void build_features(std::vector<CurveSpec> specs);  // implicit_features.cpp
   std::vector<PatchId> patches_around(const Curve& curve, double t_begin, double t_end,
                                       const std::string& name) const;
