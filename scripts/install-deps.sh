@@ -10,6 +10,10 @@ packages=(
   libpng-dev zlib1g-dev  # view/: PNG pictures, zlib-compressed .vtu input
   python3-meshio gmsh   # independent readers used by the round-trip tests
   libmetis-dev          # --partitions: METIS on the tetrahedra's dual graph
+  # The Python module (python/): headers, pybind11, numpy; pytest runs tests/python;
+  # venv, setuptools and wheel make `pip install --no-build-isolation .` work offline.
+  python3-dev pybind11-dev python3-numpy python3-pytest python3-venv python3-setuptools
+  python3-wheel
   # OpenCASCADE for cad/ (STEP/IGES need data-exchange, whose CMake config also
   # wants the ocaf and visualization dev packages; TKernel links TBB).
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev

@@ -1,0 +1,130 @@
+#include "py_oracle.h"
+
+#include <pybind11/stl.h>
+
+#include <string>
+
+#include "rdmesh/errors.h"
+
+namespace py = pybind11;
+
+namespace rdmesh::python {
+
+const Curve& PyOracleBase::curve(CurveId id) const {
+  throw OracleError("a Python oracle has no curves (asked for curve " + std::to_string(id.value) +
+                    ")");
+}
+
+namespace {
+
+Point3 to_point(const py::handle& h, const char* what) {
+  const py::sequence s = py::reinterpret_borrow<py::sequence>(h);
+  if (!PySequence_Check(h.ptr()) || s.size() != 3) {
+    throw OracleError(std::string("rdmesh.Oracle.") + what + " must give points as (x, y, z)");
+  }
+  return {s[0].cast<double>(), s[1].cast<double>(), s[2].cast<double>()};
+}
+
+py::tuple from_point(const Point3& p) { return py::make_tuple(p.x, p.y, p.z); }
+
+/// Calls the Python subclass's method `name`; OracleError when it has none.
+class Trampoline final : public PyOracleBase {
+ public:
+  Box3 bounding_box() const override {
+    if (!box_) {
+      const py::object b = call("bounding_box");
+      const py::sequence s = py::reinterpret_borrow<py::sequence>(b);
+      if (!PySequence_Check(b.ptr()) || s.size() != 6) {
+        throw OracleError(
+            "rdmesh.Oracle.bounding_box must return (xmin, ymin, zmin, xmax, ymax, zmax)");
+      }
+      box_ = Box3{{s[0].cast<double>(), s[1].cast<double>(), s[2].cast<double>()},
+                  {s[3].cast<double>(), s[4].cast<double>(), s[5].cast<double>()}};
+    }
+    return *box_;
+  }
+
+  SubdomainId locate(const Point3& p) const override {
+    return SubdomainId(call("locate", from_point(p)).cast<int>());
+  }
+
+  std::optional<SurfaceHit> intersect(const Point3& a, const Point3& b) const override {
+    const py::object r = call("intersect", from_point(a), from_point(b));
+    if (r.is_none()) return std::nullopt;
+    const py::sequence s = py::reinterpret_borrow<py::sequence>(r);
+    if (!PySequence_Check(r.ptr()) || s.size() != 2) {
+      throw OracleError("rdmesh.Oracle.intersect must return None or ((x, y, z), patch)");
+    }
+    return SurfaceHit{to_point(s[0], "intersect"), PatchId(s[1].cast<int>())};
+  }
+
+  std::vector<SubdomainInfo> subdomains() const override {
+    if (!subdomains_) {
+      subdomains_.emplace();
+      int id = 0;
+      for (const py::handle& name : call("subdomains")) {
+        subdomains_->push_back({SubdomainId(++id), py::str(name)});
+      }
+    }
+    return *subdomains_;
+  }
+
+  std::vector<PatchInfo> patches() const override {
+    if (!patches_) {
+      patches_.emplace();
+      int id = 0;
+      for (const py::handle& h : call("patches")) {
+        const py::sequence s = py::reinterpret_borrow<py::sequence>(h);
+        if (!PySequence_Check(h.ptr()) || s.size() != 3) {
+          throw OracleError("rdmesh.Oracle.patches must return [(name, side_a, side_b), ...]");
+        }
+        patches_->push_back({PatchId(++id), py::str(s[0]), SubdomainId(s[1].cast<int>()),
+                             SubdomainId(s[2].cast<int>())});
+      }
+    }
+    return *patches_;
+  }
+
+  std::vector<Point3> initial_points(PatchId patch) const override {
+    std::vector<Point3> out;
+    for (const py::handle& h : call("initial_points", patch.value)) {
+      out.push_back(to_point(h, "initial_points"));
+    }
+    return out;
+  }
+
+  std::optional<Point3> project(const Point3& p, PatchId patch) const override {
+    const py::object r = call("project", from_point(p), patch.value);
+    if (r.is_none()) return std::nullopt;
+    return to_point(r, "project");
+  }
+
+  double tolerance() const override {
+    if (!tolerance_) tolerance_ = call("tolerance").cast<double>();
+    return *tolerance_;
+  }
+
+ private:
+  template <class... Args>
+  py::object call(const char* name, Args&&... args) const {
+    py::gil_scoped_acquire gil;
+    const py::function f = py::get_override(static_cast<const PyOracleBase*>(this), name);
+    if (!f) throw OracleError(std::string("rdmesh.Oracle subclass does not define ") + name + "()");
+    return f(std::forward<Args>(args)...);
+  }
+
+  mutable std::optional<Box3> box_;
+  mutable std::optional<std::vector<SubdomainInfo>> subdomains_;
+  mutable std::optional<std::vector<PatchInfo>> patches_;
+  mutable std::optional<double> tolerance_;
+};
+
+}  // namespace
+
+void bind_oracle(py::module_& m) {
+  py::class_<PyOracleBase, Trampoline>(
+      m, "Oracle", "Base class of a domain written in Python (see rdmesh.mesh_oracle)")
+      .def(py::init<>());
+}
+
+}  // namespace rdmesh::python

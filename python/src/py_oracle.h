@@ -1,0 +1,28 @@
+// rdmesh.Oracle: a DomainOracle written in Python. A subclass defines
+// bounding_box, locate, intersect, subdomains, patches, initial_points,
+// project and tolerance (see rdmesh/__init__.py); sharp features (curves,
+// corners) are not offered to Python oracles. Every query is a Python call
+// made with the GIL held: orders of magnitude slower than a C++ oracle or an
+// expression, which is why the constant answers (box, subdomains, patches,
+// tolerance) are asked once and kept.
+#pragma once
+
+#include <pybind11/pybind11.h>
+
+#include <optional>
+#include <vector>
+
+#include "rdmesh/oracle.h"
+
+namespace rdmesh::python {
+
+class PyOracleBase : public DomainOracle {
+ public:
+  std::vector<CornerInfo> corners() const override { return {}; }
+  std::vector<CurveInfo> curves() const override { return {}; }
+  const Curve& curve(CurveId id) const override;
+};
+
+void bind_oracle(pybind11::module_& m);
+
+}  // namespace rdmesh::python
