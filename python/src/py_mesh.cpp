@@ -41,7 +41,14 @@ std::vector<std::string> names(const std::vector<Info>& infos) {
   return out;
 }
 
-PyMesh& self_of(const py::object& self) { return self.cast<PyMesh&>(); }
+/// The getter of a TetMesh array member as an (n, columns) view of T.
+template <class T, class Vector>
+auto rows(Vector TetMesh::*member, std::size_t columns) {
+  return [member, columns](const py::object& self) {
+    const Vector& v = self.cast<const PyMesh&>().mesh.*member;
+    return view<T>(v.data(), v.size(), columns, self);
+  };
+}
 
 }  // namespace
 
@@ -51,69 +58,24 @@ void bind_mesh(py::module_& m) {
                      "mesh's own storage; indices are 0-based; labels are the ids of "
                      "subdomains, patches, curves and corners (1-based, names in "
                      "subdomain_names[id - 1] etc.).")
-      .def_property_readonly(
-          "points",
-          [](const py::object& s) {
-            const TetMesh& t = self_of(s).mesh;
-            return view<double>(t.vertices.data(), t.vertices.size(), 3, s);
-          },
-          "(n, 3) float64 vertex coordinates")
-      .def_property_readonly(
-          "tets",
-          [](const py::object& s) {
-            const TetMesh& t = self_of(s).mesh;
-            return view<int>(t.tets.data(), t.tets.size(), 4, s);
-          },
-          "(k, 4) int32, positively oriented tetrahedra")
-      .def_property_readonly(
-          "tet_labels",
-          [](const py::object& s) {
-            const TetMesh& t = self_of(s).mesh;
-            return view<int>(t.tet_subdomain.data(), t.tet_subdomain.size(), 1, s);
-          },
-          "(k,) int32 subdomain id of each tetrahedron")
-      .def_property_readonly(
-          "triangles",
-          [](const py::object& s) {
-            const TetMesh& t = self_of(s).mesh;
-            return view<int>(t.triangles.data(), t.triangles.size(), 3, s);
-          },
-          "(t, 3) int32 boundary and interface triangles")
-      .def_property_readonly(
-          "triangle_labels",
-          [](const py::object& s) {
-            const TetMesh& t = self_of(s).mesh;
-            return view<int>(t.triangle_patch.data(), t.triangle_patch.size(), 1, s);
-          },
-          "(t,) int32 patch id of each triangle")
-      .def_property_readonly(
-          "edges",
-          [](const py::object& s) {
-            const TetMesh& t = self_of(s).mesh;
-            return view<int>(t.edges.data(), t.edges.size(), 2, s);
-          },
-          "(e, 2) int32 feature edges (sharp curves)")
-      .def_property_readonly(
-          "edge_labels",
-          [](const py::object& s) {
-            const TetMesh& t = self_of(s).mesh;
-            return view<int>(t.edge_curve.data(), t.edge_curve.size(), 1, s);
-          },
-          "(e,) int32 curve id of each feature edge")
-      .def_property_readonly(
-          "corners",
-          [](const py::object& s) {
-            const TetMesh& t = self_of(s).mesh;
-            return view<int>(t.corner_vertices.data(), t.corner_vertices.size(), 1, s);
-          },
-          "(c,) int32 vertex index of each corner")
-      .def_property_readonly(
-          "corner_labels",
-          [](const py::object& s) {
-            const TetMesh& t = self_of(s).mesh;
-            return view<int>(t.corner_ids.data(), t.corner_ids.size(), 1, s);
-          },
-          "(c,) int32 corner id of each corner vertex")
+      .def_property_readonly("points", rows<double>(&TetMesh::vertices, 3),
+                             "(n, 3) float64 vertex coordinates")
+      .def_property_readonly("tets", rows<int>(&TetMesh::tets, 4),
+                             "(k, 4) int32, positively oriented tetrahedra")
+      .def_property_readonly("tet_labels", rows<int>(&TetMesh::tet_subdomain, 1),
+                             "(k,) int32 subdomain id of each tetrahedron")
+      .def_property_readonly("triangles", rows<int>(&TetMesh::triangles, 3),
+                             "(t, 3) int32 boundary and interface triangles")
+      .def_property_readonly("triangle_labels", rows<int>(&TetMesh::triangle_patch, 1),
+                             "(t,) int32 patch id of each triangle")
+      .def_property_readonly("edges", rows<int>(&TetMesh::edges, 2),
+                             "(e, 2) int32 feature edges (sharp curves)")
+      .def_property_readonly("edge_labels", rows<int>(&TetMesh::edge_curve, 1),
+                             "(e,) int32 curve id of each feature edge")
+      .def_property_readonly("corners", rows<int>(&TetMesh::corner_vertices, 1),
+                             "(c,) int32 vertex index of each corner")
+      .def_property_readonly("corner_labels", rows<int>(&TetMesh::corner_ids, 1),
+                             "(c,) int32 corner id of each corner vertex")
       .def_property_readonly("subdomain_names",
                              [](const PyMesh& p) { return names(p.mesh.subdomains); })
       .def_property_readonly("patch_names", [](const PyMesh& p) { return names(p.mesh.patches); })

@@ -122,8 +122,25 @@ class Trampoline final : public PyOracleBase {
 }  // namespace
 
 void bind_oracle(py::module_& m) {
-  py::class_<PyOracleBase, Trampoline>(
-      m, "Oracle", "Base class of a domain written in Python (see rdmesh.mesh_oracle)")
+  py::class_<PyOracleBase, Trampoline>(m, "Oracle",
+                                       R"(A domain written in Python, meshed by rdmesh.mesh_oracle.
+
+Subclass it (calling super().__init__()) and define the queries of the C++
+interface (oracles/include/rdmesh/oracle.h); points are (x, y, z) sequences:
+  bounding_box() -> (xmin, ymin, zmin, xmax, ymax, zmax): contains the domain
+  locate(p) -> int: the subdomain containing p, 0 outside
+  intersect(a, b) -> None or ((x, y, z), patch): a crossing of the segment
+      [a, b] with a patch, at least whenever locate(a) != locate(b)
+  subdomains() -> [name, ...]: subdomains 1..n
+  patches() -> [(name, side_a, side_b), ...]: patches 1..m, each between two
+      labels (0 = outside)
+  initial_points(patch) -> [(x, y, z), ...] or an (n, 3) array: points on the
+      patch, at least three per connected component
+  project(p, patch) -> (x, y, z) or None: the closest point of the patch
+  tolerance() -> float: the accuracy of the points above
+bounding_box, subdomains, patches and tolerance are asked once. Sharp curves
+and corners are not offered to Python oracles. Every query is a Python call:
+a Python oracle is much slower than an expression or a C++ oracle.)")
       .def(py::init<>());
 }
 
