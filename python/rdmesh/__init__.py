@@ -13,7 +13,7 @@ Options are the command line's, with underscores: size, edge_size, facet_size,
 cell_size, facet_distance, facet_angle, radius_edge, min_size, max_elements,
 features ("protect" or "refine"), surface_only, heal, feature_angle,
 exude (default True; False is --no-exude), exude_time_limit, time_limit,
-keep_bad_mesh, check ("cheap" or "full"). They are parsed by the CLI's own
+keep_bad_mesh, check ("cheap" or "full"), order (1, or 2: 10-node tetrahedra). They are parsed by the CLI's own
 parser, with its defaults and its checks.
 
 Errors raise rdmesh.InputError (bad input or options, the CLI's exit code 2,
@@ -24,6 +24,7 @@ Ctrl-C (KeyboardInterrupt) stops a run at the next progress point.
 """
 
 import json as _json
+import numbers
 import os as _os
 
 from . import _rdmesh
@@ -61,7 +62,12 @@ def _cli_args(options):
         else:
             if isinstance(value, bool):
                 raise TypeError(f"{key} takes a value, not {value!r}")
-            text = repr(float(value)) if isinstance(value, (int, float)) else str(value)
+            if isinstance(value, numbers.Integral):
+                text = str(int(value))
+            elif isinstance(value, numbers.Real):
+                text = repr(float(value))  # round-trips exactly
+            else:
+                text = str(value)
             args.append(f"--{name}={text}")
     return args
 
@@ -159,15 +165,24 @@ def mesh_oracle(oracle, progress=None, **options):
 
 def to_meshio(m):
     """The mesh as a meshio.Mesh (needs meshio): cell blocks tetra, triangle, line and
-    vertex (corners), with cell data "subdomain", "patch", "curve" and "corner" (0 on
+    vertex (corners); tetra10, triangle6 and line3 for order=2; with cell data "subdomain", "patch", "curve" and "corner" (0 on
     the blocks a label does not apply to)."""
     import meshio
     import numpy as np
 
-    blocks = [("tetra", m.tets, "subdomain", m.tet_labels),
-              ("triangle", m.triangles, "patch", m.triangle_labels),
-              ("line", m.edges, "curve", m.edge_labels),
-              ("vertex", m.corners.reshape(-1, 1), "corner", m.corner_labels)]
+    if len(m.tet_mid_nodes) or len(m.triangle_mid_nodes):  # order=2
+        mid = np.asarray(m.tet_mid_nodes)
+        blocks = [("tetra10", np.hstack([m.tets, mid[:, [0, 1, 2, 3, 5, 4]]]), "subdomain",
+                   m.tet_labels),  # VTK's edge order: 01, 12, 20, 03, 13, 23
+                  ("triangle6", np.hstack([m.triangles, m.triangle_mid_nodes]), "patch",
+                   m.triangle_labels),
+                  ("line3", np.hstack([m.edges, np.asarray(m.edge_mid_nodes).reshape(-1, 1)]),
+                   "curve", m.edge_labels)]
+    else:
+        blocks = [("tetra", m.tets, "subdomain", m.tet_labels),
+                  ("triangle", m.triangles, "patch", m.triangle_labels),
+                  ("line", m.edges, "curve", m.edge_labels)]
+    blocks.append(("vertex", m.corners.reshape(-1, 1), "corner", m.corner_labels))
     blocks = [b for b in blocks if len(b[1]) > 0]
     cells = [(kind, np.array(conn)) for kind, conn, _, _ in blocks]
     cell_data = {}

@@ -102,6 +102,7 @@ PyMesh mesh_input(const run::Options& opt, const run::LoadedInput& input,
     throw FidelityError(opt.input + ": " + run::failure_reason(opt, run) +
                         "; no mesh returned (keep_bad_mesh=True returns it)");
   }
+  run.fem = run::apply_fem_options(opt.fem, run.result.mesh, *input.oracle);  // --order 2
   PyMesh out;
   out.report_json = run::run_report(opt, run).dump();
   out.failed = run.failed();

@@ -76,6 +76,13 @@ void bind_mesh(py::module_& m) {
                              "(c,) int32 vertex index of each corner")
       .def_property_readonly("corner_labels", rows<int>(&TetMesh::corner_ids, 1),
                              "(c,) int32 corner id of each corner vertex")
+      .def_property_readonly("tet_mid_nodes", rows<int>(&TetMesh::tet_mid_nodes, 6),
+                             "order=2: (k, 6) int32 mid-edge node of edges 01, 12, 20, 30, 32, "
+                             "31 of each tetrahedron (Gmsh's order); empty for order 1")
+      .def_property_readonly("triangle_mid_nodes", rows<int>(&TetMesh::triangle_mid_nodes, 3),
+                             "order=2: (t, 3) int32 mid-edge nodes of edges 01, 12, 20")
+      .def_property_readonly("edge_mid_nodes", rows<int>(&TetMesh::edge_mid_nodes, 1),
+                             "order=2: (e,) int32 mid node of each feature edge")
       .def_property_readonly("subdomain_names",
                              [](const PyMesh& p) { return names(p.mesh.subdomains); })
       .def_property_readonly("patch_names", [](const PyMesh& p) { return names(p.mesh.patches); })

@@ -149,3 +149,30 @@ def test_surface_only():
     m = rdmesh.mesh_implicit("x^2 + y^2 + z^2 - 1", bbox=BOX, size=0.2, surface_only=True)
     assert len(m.tets) == 0 and len(m.triangles) > 50
     assert euler_characteristic(m, [1]) == 2
+
+
+def test_second_order():
+    m = rdmesh.mesh_implicit("x^2 + y^2 + z^2 - 1", bbox=BOX, size=0.3, order=2)
+    k = len(m.tets)
+    assert m.tet_mid_nodes.shape == (k, 6) and m.triangle_mid_nodes.shape == (len(m.triangles), 3)
+    assert m.report["second_order"]["mid_nodes"] > 0
+    p = m.points
+    # Mid-edge nodes near their edge's midpoint (in Gmsh's edge order) ...
+    edges = [(0, 1), (1, 2), (2, 0), (3, 0), (3, 2), (3, 1)]
+    for j, (a, b) in enumerate(edges):
+        mid = 0.5 * (p[m.tets[:, a]] + p[m.tets[:, b]])
+        length = np.linalg.norm(p[m.tets[:, a]] - p[m.tets[:, b]], axis=1)
+        assert (np.linalg.norm(p[m.tet_mid_nodes[:, j]] - mid, axis=1) <= 0.25 * length).all()
+    # ... and the boundary's on the exact sphere.
+    radius = np.linalg.norm(p[np.unique(m.triangle_mid_nodes)], axis=1)
+    assert np.allclose(radius, 1.0, atol=1e-8)
+    meshio = pytest.importorskip("meshio")
+    mm = m.to_meshio()
+    assert [c.type for c in mm.cells] == ["tetra10", "triangle6"]
+    # meshio's tetra10 is VTK's: nodes 4..9 on edges 01, 12, 02, 03, 13, 23.
+    t10 = mm.cells[0].data
+    for j, (a, b) in enumerate([(0, 1), (1, 2), (0, 2), (0, 3), (1, 3), (2, 3)]):
+        mid = 0.5 * (p[t10[:, a]] + p[t10[:, b]])
+        length = np.linalg.norm(p[t10[:, a]] - p[t10[:, b]], axis=1)
+        assert (np.linalg.norm(p[t10[:, 4 + j]] - mid, axis=1) <= 0.25 * length).all()
+    assert isinstance(mm, meshio.Mesh)
