@@ -13,7 +13,8 @@ Options are the command line's, with underscores: size, edge_size, facet_size,
 cell_size, facet_distance, facet_angle, radius_edge, min_size, max_elements,
 features ("protect" or "refine"), surface_only, heal, feature_angle,
 exude (default True; False is --no-exude), exude_time_limit, time_limit,
-keep_bad_mesh, check ("cheap" or "full"), order (1, or 2: 10-node tetrahedra). They are parsed by the CLI's own
+keep_bad_mesh, check ("cheap" or "full"), order (1, or 2: 10-node tetrahedra),
+partitions (METIS). They are parsed by the CLI's own
 parser, with its defaults and its checks.
 
 Errors raise rdmesh.InputError (bad input or options, the CLI's exit code 2,
@@ -189,6 +190,10 @@ def to_meshio(m):
     for key in ("subdomain", "patch", "curve", "corner"):
         cell_data[key] = [np.array(labels) if k == key else np.zeros(len(conn), dtype=np.int32)
                           for _, conn, k, labels in blocks]
+    if len(m.tet_partition):  # partitions=N: the tetrahedra's, 0 on the other blocks
+        cell_data["partition"] = [np.array(m.tet_partition) if k == "subdomain"
+                                  else np.zeros(len(conn), dtype=np.int32)
+                                  for _, conn, k, _ in blocks]
     return meshio.Mesh(np.array(m.points), cells, cell_data=cell_data)
 
 

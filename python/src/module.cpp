@@ -84,6 +84,8 @@ py::dict progress_dict(const Progress& p) {
 /// `release_gil`: no Python code in the oracle, so other threads may run.
 PyMesh mesh_input(const run::Options& opt, const run::LoadedInput& input,
                   const py::object& progress, bool release_gil, double seconds_load) {
+  // No output yet: Mesh.write checks the format against partitions.
+  run::check_fem_options(opt.fem, opt.input, "mesh.msh", opt.surface_only);
   const Criteria criteria = run::resolve_criteria(opt, input);
   MeshOptions options;
   options.progress = [&progress](const Progress& p) {

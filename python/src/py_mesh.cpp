@@ -83,6 +83,9 @@ void bind_mesh(py::module_& m) {
                              "order=2: (t, 3) int32 mid-edge nodes of edges 01, 12, 20")
       .def_property_readonly("edge_mid_nodes", rows<int>(&TetMesh::edge_mid_nodes, 1),
                              "order=2: (e,) int32 mid node of each feature edge")
+      .def_property_readonly("tet_partition", rows<int>(&TetMesh::tet_partition, 1),
+                             "partitions=N: (k,) int32 partition 1..N of each tetrahedron; "
+                             "empty without partitions")
       .def_property_readonly("subdomain_names",
                              [](const PyMesh& p) { return names(p.mesh.subdomains); })
       .def_property_readonly("patch_names", [](const PyMesh& p) { return names(p.mesh.patches); })
@@ -103,6 +106,11 @@ void bind_mesh(py::module_& m) {
             opt.output = py::str(py::module_::import("os").attr("fspath")(path));
             if (!p.input.empty() && std::filesystem::exists(p.input)) run::check_paths(opt);
             (void)format_from_path(opt.output);
+            if (!p.mesh.tet_partition.empty()) {  // Medit cannot carry them
+              run::FemOptions fem;
+              fem.partitions = 1;
+              run::check_fem_options(fem, p.input, opt.output, false);
+            }
             run::check_writable(opt.output);
             py::gil_scoped_release release;
             write_mesh(p.mesh, opt.output);

@@ -100,3 +100,16 @@ def test_picture(tmp_path):
     data = (tmp_path / "sphere.png").read_bytes()
     assert data[:8] == b"\x89PNG\r\n\x1a\n"
     assert int.from_bytes(data[16:20], "big") == 640 and int.from_bytes(data[20:24], "big") == 400
+
+
+def test_partitions(tmp_path):
+    m = rdmesh.mesh_domain(SAMPLES / "sphere.json", size=0.2, partitions=4)
+    assert set(np.unique(m.tet_partition)) == {1, 2, 3, 4}
+    assert m.report["partitions"]["parts"] == 4
+    with pytest.raises(rdmesh.InputError, match="Medit"):
+        m.write(tmp_path / "parts.mesh")
+    m.write(tmp_path / "parts.vtu")
+    meshio = pytest.importorskip("meshio")
+    assert np.array_equal(m.to_meshio().cell_data["partition"][0], m.tet_partition)
+    with pytest.raises(rdmesh.InputError, match="surface-only"):
+        rdmesh.mesh_domain(SAMPLES / "sphere.json", partitions=2, surface_only=True)
