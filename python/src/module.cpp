@@ -86,7 +86,8 @@ PyMesh mesh_input(const run::Options& opt, const run::LoadedInput& input,
                   const py::object& progress, bool release_gil, double seconds_load) {
   // No output yet: Mesh.write checks the format against partitions.
   run::check_fem_options(opt.fem, opt.input, "mesh.msh", opt.surface_only);
-  const Criteria criteria = run::resolve_criteria(opt, input);
+  Criteria criteria = run::resolve_criteria(opt, input);
+  const std::vector<EntitySize> sizes = run::apply_size_options(opt.fem, *input.oracle, criteria);
   MeshOptions options;
   options.progress = [&progress](const Progress& p) {
     py::gil_scoped_acquire gil;
@@ -104,7 +105,7 @@ PyMesh mesh_input(const run::Options& opt, const run::LoadedInput& input,
     throw FidelityError(opt.input + ": " + run::failure_reason(opt, run) +
                         "; no mesh returned (keep_bad_mesh=True returns it)");
   }
-  run.fem = run::apply_fem_options(opt.fem, run.result.mesh, *input.oracle);  // --order 2
+  run.fem = run::apply_fem_options(opt.fem, sizes, run.result.mesh, *input.oracle);
   PyMesh out;
   out.report_json = run::run_report(opt, run).dump();
   out.failed = run.failed();
