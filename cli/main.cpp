@@ -11,7 +11,6 @@
 #include "heap_setup.h"
 #include "progress_display.h"
 #include "rdmesh/arguments.h"
-#include "rdmesh/atomic_file.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/mesh_run.h"
 #include "rdmesh/mesh_writers.h"
@@ -31,11 +30,7 @@ int mesh_command(const rdmesh::run::Options& opt) {
   using namespace rdmesh;
   const auto start = std::chrono::steady_clock::now();
   run::check_paths(opt);
-  run::check_output_format(opt.output, opt.write);  // unknown extension, binary Medit...
-  run::check_writable(opt.output);
-  run::check_fem_options(opt.fem, opt.input, opt.output, opt.surface_only);
-  if (!opt.report.empty()) run::check_writable(opt.report);
-  if (!opt.picture.path.empty()) (void)run::picture_options(opt.picture, opt.input);
+  run::check_outputs(opt);
 
   cli::ProgressDisplay progress(!opt.quiet);
   progress.phase("reading " + run::printable(opt.input));
@@ -56,23 +51,7 @@ int mesh_command(const rdmesh::run::Options& opt) {
   if (!bad || opt.keep_bad_mesh) {  // timed on its own, in its summary line
     run::apply_fem(opt, sizes, *input.oracle, mesh_options, mesh_run);
   }
-  const auto t = std::chrono::steady_clock::now();
-  if (!bad || opt.keep_bad_mesh) {
-    progress.phase("writing " + run::printable(opt.output));
-    write_mesh(result.mesh, opt.output, opt.write);
-    if (!opt.picture.path.empty()) {
-      progress.phase("drawing " + run::printable(opt.picture.path));
-      run::write_picture(result.mesh, opt.picture, opt.input);
-    }
-  }
-  mesh_run.times.write =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-
-  if (!opt.report.empty()) {
-    progress.phase("writing " + run::printable(opt.report));
-    const nlohmann::json report = run::run_report(opt, *input.oracle, mesh_run);
-    write_file_atomically(opt.report, [&](std::ostream& out) { out << report.dump(2) << '\n'; });
-  }
+  run::write_outputs(opt, *input.oracle, mesh_options, !bad || opt.keep_bad_mesh, mesh_run);
   progress.finish();
   if (!opt.quiet) {
     std::cout << format_summary(mesh_run.quality) << run::format_fem_summary(mesh_run.fem)
@@ -113,9 +92,7 @@ int main(int argc, char** argv) {
   try {
     return mesh_command(opt);
   } catch (const rdmesh::InputError& e) {
-    // The library's errors about the run (criteria too coarse for the domain)
-    // name no file: the input is the one.
-    return fail(2, e.file().empty() ? opt.input + ": " + e.what() : e.what());
+    return fail(2, rdmesh::run::input_error_message(e, opt.input));
   } catch (const rdmesh::OutputError& e) {
     return fail(2, e.what());
   } catch (const rdmesh::Error& e) {

@@ -70,7 +70,7 @@ void check_fem_options(const FemOptions& opt, const std::string& input, const st
   if (surface_only) {
     throw InputError(input, "--partitions needs tetrahedra: it cannot go with --surface-only");
   }
-  if (format_from_path(output) == MeshFormat::Medit) {
+  if (!output.empty() && format_from_path(output) == MeshFormat::Medit) {
     throw InputError(output,
                      "a Medit file cannot carry partitions (--partitions): write .msh or .vtu");
   }

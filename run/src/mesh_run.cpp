@@ -3,6 +3,8 @@
 #include <chrono>
 
 #include "model_measures.h"
+#include "rdmesh/atomic_file.h"
+#include "rdmesh/mesh_writers.h"
 #include "rdmesh/number_text.h"
 
 namespace rdmesh::run {
@@ -54,6 +56,27 @@ void apply_fem(const Options& opt, const std::vector<EntitySize>& sizes, const D
   if (opt.fem.order == 2) announce(options, "making second-order elements");
   if (opt.fem.order != 2 && opt.fem.partitions > 0) announce(options, "partitioning");
   run.fem = apply_fem_options(opt.fem, sizes, run.result.mesh, oracle);
+}
+
+void write_outputs(const Options& opt, const DomainOracle& oracle, const MeshOptions& options,
+                   bool write_mesh_too, MeshRun& run) {
+  const auto t = std::chrono::steady_clock::now();
+  if (write_mesh_too) {
+    if (!opt.output.empty()) {
+      announce(options, "writing " + printable(opt.output));
+      write_mesh(run.result.mesh, opt.output, opt.write);
+    }
+    if (!opt.picture.path.empty()) {
+      announce(options, "drawing " + printable(opt.picture.path));
+      write_picture(run.result.mesh, opt.picture, opt.input);
+    }
+  }
+  run.times.write = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+  if (!opt.report.empty()) {
+    announce(options, "writing " + printable(opt.report));
+    const nlohmann::json report = run_report(opt, oracle, run);
+    write_file_atomically(opt.report, [&](std::ostream& out) { out << report.dump(2) << '\n'; });
+  }
 }
 
 void announce(const MeshOptions& options, const std::string& phase) {

@@ -26,6 +26,22 @@
 namespace rdmesh::run {
 namespace fs = std::filesystem;
 
+void add_write_options(CLI::App& app, WriteOptions& write) {
+  auto* binary = app.add_flag_callback(
+      "--binary", [&write] { write.encoding = Encoding::binary; },
+      "Binary output: .msh 4.1 binary, .vtu zlib-compressed (default: binary above 1e6 "
+      "elements)");
+  app.add_flag_callback(
+         "--ascii", [&write] { write.encoding = Encoding::ascii; },
+         "Text output whatever the mesh's size")
+      ->excludes(binary);
+  app.add_option("--format", write.msh22,
+                 "The .msh version: 'msh41' (Gmsh 4.1; default) or 'msh22' (Gmsh 2.2 ASCII, for "
+                 "older solvers)")
+      ->transform(CLI::CheckedTransformer(
+          std::map<std::string, bool>{{"msh41", false}, {"msh22", true}}, CLI::ignore_case));
+}
+
 void add_options(CLI::App& app, Options& opt) {
   app.add_option("input", opt.input,
                  "Domain: .json implicit domain file, a .step/.stp/.brep/.iges/.igs CAD model, or "
@@ -107,19 +123,7 @@ void add_options(CLI::App& app, Options& opt) {
                  "(also every boundary triangle's distance to its surface; also with --report)")
       ->transform(CLI::CheckedTransformer(
           std::map<std::string, bool>{{"cheap", false}, {"full", true}}, CLI::ignore_case));
-  auto* binary = app.add_flag_callback(
-      "--binary", [&opt] { opt.write.encoding = Encoding::binary; },
-      "Binary output: .msh 4.1 binary, .vtu zlib-compressed (default: binary above 1e6 "
-      "elements)");
-  app.add_flag_callback(
-         "--ascii", [&opt] { opt.write.encoding = Encoding::ascii; },
-         "Text output whatever the mesh's size")
-      ->excludes(binary);
-  app.add_option("--format", opt.write.msh22,
-                 "The .msh version: 'msh41' (Gmsh 4.1; default) or 'msh22' (Gmsh 2.2 ASCII, for "
-                 "older solvers)")
-      ->transform(CLI::CheckedTransformer(
-          std::map<std::string, bool>{{"msh41", false}, {"msh22", true}}, CLI::ignore_case));
+  add_write_options(app, opt.write);
   app.add_option("--picture", opt.picture.path,
                  "Also write a picture of the mesh (.png): the boundary and a cut view");
   add_picture_options(app, opt.picture);
@@ -182,6 +186,10 @@ bool same_file(const fs::path& a, const fs::path& b) {
 
 void check_paths(const Options& opt) {
   check_input_file(opt.input);
+  check_output_names(opt);
+}
+
+void check_output_names(const Options& opt) {
   const std::pair<const char*, const std::string*> outputs[] = {
       {"-o", &opt.output}, {"--report", &opt.report}, {"--picture", &opt.picture.path}};
   for (std::size_t i = 0; i < std::size(outputs); ++i) {
@@ -398,6 +406,20 @@ nlohmann::json report_json(const Options& opt, const Criteria& criteria, const D
                   {"write", times.write},
                   {"report", times.report}};
   return j;
+}
+
+std::string input_error_message(const InputError& e, const std::string& input) {
+  return e.file().empty() ? input + ": " + e.what() : e.what();
+}
+
+void check_outputs(const Options& opt) {
+  if (!opt.output.empty()) {
+    check_output_format(opt.output, opt.write);  // unknown extension, binary Medit...
+    check_writable(opt.output);
+  }
+  check_fem_options(opt.fem, opt.input, opt.output, opt.surface_only);
+  if (!opt.report.empty()) check_writable(opt.report);
+  if (!opt.picture.path.empty()) (void)picture_options(opt.picture, opt.input);
 }
 
 void check_output_format(const std::string& path, const WriteOptions& write) {

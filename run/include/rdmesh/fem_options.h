@@ -28,7 +28,8 @@ struct FemOptions {
 void add_fem_options(CLI::App& app, FemOptions& opt);
 
 /// Before meshing: refuses (InputError) what the options cannot give:
-/// partitions of a surface-only mesh, partitions in a Medit file.
+/// partitions of a surface-only mesh, partitions in a Medit file (`output`
+/// empty: no file yet).
 void check_fem_options(const FemOptions& opt, const std::string& input, const std::string& output,
                        bool surface_only);
 

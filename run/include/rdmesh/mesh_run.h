@@ -51,6 +51,13 @@ nlohmann::json run_report(const Options& opt, const DomainOracle& oracle, const 
 void apply_fem(const Options& opt, const std::vector<EntitySize>& sizes, const DomainOracle& oracle,
                const MeshOptions& options, MeshRun& run);
 
+/// What `opt` asks to write, as the command does, each announced as a phase:
+/// with `write_mesh_too` the mesh (opt.output, opt.write) and the picture, then
+/// the report (always, when asked: a failed run's report says why). Sets
+/// run.times.write (mesh and picture). Empty paths are skipped.
+void write_outputs(const Options& opt, const DomainOracle& oracle, const MeshOptions& options,
+                   bool write_mesh_too, MeshRun& run);
+
 /// Tells `options.progress` (if any) that `phase` starts: a Progress with that
 /// phase and zero counts, as the mesher announces its own phases.
 void announce(const MeshOptions& options, const std::string& phase);

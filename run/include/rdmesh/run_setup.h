@@ -13,6 +13,7 @@
 
 #include "rdmesh/criteria.h"
 #include "rdmesh/domain_file.h"
+#include "rdmesh/errors.h"
 #include "rdmesh/fem_options.h"
 #include "rdmesh/fidelity.h"
 #include "rdmesh/mesh_writers.h"
@@ -46,6 +47,9 @@ struct Options {
   WriteOptions write;          ///< --binary / --ascii, --format msh41|msh22
 };
 
+/// --binary, --ascii and --format (msh41|msh22).
+void add_write_options(CLI::App& app, WriteOptions& write);
+
 /// Every option of a meshing run, --order and the entity sizes (add_fem_options) included.
 void add_options(CLI::App& app, Options& opt);
 
@@ -65,6 +69,15 @@ LoadedInput load_input(const Options& opt);
 /// output (-o, --report, --picture) is the input or another output. Throws
 /// InputError naming the input.
 void check_paths(const Options& opt);
+
+/// check_paths without the input: no output is the input or another output (the
+/// input of a Python run may be no file).
+void check_output_names(const Options& opt);
+
+/// Before meshing, what the outputs asked for (-o, --report, --picture; empty:
+/// none) would refuse: check_output_format, check_writable, check_fem_options,
+/// the picture options. Throws InputError / OutputError.
+void check_outputs(const Options& opt);
 
 /// `message` with control characters escaped (\n, \t, \xNN): one printable line.
 std::string printable(const std::string& message);
@@ -93,6 +106,11 @@ nlohmann::json report_json(const Options& opt, const Criteria& criteria, const D
                            const QualityReport& quality,
                            const std::optional<FidelityReport>& fidelity, const RunTimes& times,
                            const FemResults& fem = {});
+
+/// The one-line message of a bad-input error of a run on `input`: the library's
+/// errors about the run itself (criteria too coarse for the domain) name no
+/// file, and the input is the one.
+std::string input_error_message(const InputError& e, const std::string& input);
 
 /// Throws InputError naming `path` when the mesh cannot be written there as asked:
 /// an unknown extension, a binary Medit file. Before meshing.
