@@ -9,19 +9,32 @@ Delaunay refinement of Rineau & Yvinec (INRIA RR-7912) driven by exact oracles.
     m.points, m.tets, m.tet_labels, m.triangles, m.triangle_labels, m.report
     m.write("out.msh")
 
-Options are the command line's, with underscores: size, edge_size, facet_size,
-cell_size, facet_distance, facet_angle, radius_edge, min_size, max_elements,
-features ("protect" or "refine"), surface_only, heal, feature_angle,
-exude (default True; False is --no-exude), exude_time_limit, time_limit,
-keep_bad_mesh, check ("cheap" or "full"), order (1, or 2: 10-node tetrahedra),
-partitions (METIS). They are parsed by the CLI's own
-parser, with its defaults and its checks.
+Options are the command line's (rdmesh --help), with underscores: size,
+edge_size, facet_size, cell_size, facet_distance, facet_angle, radius_edge,
+min_size, max_elements, features ("protect" or "refine"), surface_only, heal,
+feature_angle, exude (default True; False is --no-exude), exude_time_limit,
+time_limit, keep_bad_mesh, check ("cheap" or "full"), order (1, or 2: 10-node
+tetrahedra), partitions (METIS), size_on ("face:12=0.5", or a list of them),
+sizes (a .json file), grade; and what the run writes, as the CLI: output (a
+.msh/.mesh/.vtu file; none by default, Mesh.write writes later), binary, ascii,
+format ("msh41" or "msh22"), report (a .json file; Mesh.report has it anyway),
+picture (a .png), view, picture_size, cut. They are parsed by the CLI's own
+parser, with its defaults, its checks and its error messages; the run is the
+CLI's (the default sizes of CAD models, the fidelity check, the report).
 
 Errors raise rdmesh.InputError (bad input or options, the CLI's exit code 2,
 same one-line message), rdmesh.OutputError, rdmesh.FidelityError (the mesh does
 not match the model or the time limit stopped it: the CLI's exit code 4),
 rdmesh.OracleError and rdmesh.InternalError, all derived from rdmesh.Error.
 Ctrl-C (KeyboardInterrupt) stops a run at the next progress point.
+The run's warnings (the CLI's "rdmesh: warning: ..." lines) are issued as
+RuntimeWarning and kept in Mesh.warnings.
+
+progress(dict) is called as each phase starts ("reading ...", "checking the
+criteria", "protecting sharp features", "refining", "exuding slivers",
+"checking the mesh against the model", "writing ...", as the CLI's progress
+line) with phase, vertices, edge_queue, facet_queue, cell_queue and
+elapsed_seconds, and every few thousand insertions while refining.
 """
 
 import json as _json
@@ -60,6 +73,8 @@ def _cli_args(options):
                 raise TypeError(f"{key} must be True or False")
             if value:
                 args.append("--" + name)
+        elif isinstance(value, (list, tuple)) and name == "size-on":  # repeatable
+            args.extend(f"--{name}={v}" for v in value)
         else:
             if isinstance(value, bool):
                 raise TypeError(f"{key} takes a value, not {value!r}")
@@ -68,15 +83,14 @@ def _cli_args(options):
             elif isinstance(value, numbers.Real):
                 text = repr(float(value))  # round-trips exactly
             else:
-                text = str(value)
+                text = _os.fspath(value) if isinstance(value, _os.PathLike) else str(value)
             args.append(f"--{name}={text}")
     return args
 
 
 def mesh(path, progress=None, **options):
     """Meshes a file as `rdmesh PATH` does: .step/.stp/.brep/.iges/.igs, .off/.stl/.obj/.ply
-    or a .json domain file. `progress(dict)` is called during refinement with
-    vertices, edge_queue, facet_queue, cell_queue and elapsed_seconds."""
+    or a .json domain file. `progress(dict)`: see the module's documentation."""
     return _rdmesh._mesh_file(_os.fspath(path), _cli_args(options), progress)
 
 
@@ -197,4 +211,15 @@ def to_meshio(m):
     return meshio.Mesh(np.array(m.points), cells, cell_data=cell_data)
 
 
+def _write(m, path, binary=False, ascii=False, format=None):
+    """Writes .msh (Gmsh 4.1, or 2.2 with format="msh22"), .mesh (Medit) or .vtu (VTK) as
+    the CLI's -o does, atomically, never over the input file; binary=True / ascii=True are
+    --binary / --ascii (default: binary above 1e6 elements)."""
+    args = (["--binary"] if binary else []) + (["--ascii"] if ascii else [])
+    if format is not None:
+        args.append(f"--format={format}")
+    m._write(path, args)
+
+
 Mesh.to_meshio = to_meshio
+Mesh.write = _write

@@ -16,6 +16,7 @@
 #include "py_callables.h"
 #include "py_mesh.h"
 #include "py_oracle.h"
+#include "rdmesh/arguments.h"
 #include "rdmesh/domain_file.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/mesh_run.h"
@@ -32,12 +33,10 @@ class FidelityError : public Error {
   using Error::Error;
 };
 
-/// The CLI's options that a Python run takes as keywords: outputs, the report
-/// file, quietness and picture options belong to Mesh.write/picture instead.
+/// The CLI's options that a Python run takes as keywords: all but --help and
+/// --quiet (a Python run prints nothing; progress= shows the phases).
 bool python_option(const std::string& long_name) {
-  static const char* const excluded[] = {"output", "report",       "quiet", "picture",
-                                         "view",   "picture-size", "cut",   "help"};
-  return std::find(std::begin(excluded), std::end(excluded), long_name) == std::end(excluded);
+  return long_name != "help" && long_name != "quiet";
 }
 
 /// [(long name, takes a value)] of the CLI's options usable from Python.
@@ -53,8 +52,9 @@ std::vector<std::pair<std::string, bool>> option_names() {
   return out;
 }
 
-/// Parses `args` ("--name=value" or "--flag") with the CLI's own parser, as
-/// `rdmesh INPUT ARGS...` would.
+/// Parses `args` ("--name=value" or "--flag") with the CLI's own parser and
+/// wording, as `rdmesh INPUT ARGS...` would; no default output (a Python run
+/// writes only what output=, report= and picture= ask for).
 run::Options parse_options(const std::string& input, const std::vector<std::string>& args) {
   CLI::App app;
   run::Options opt;
@@ -64,14 +64,19 @@ run::Options parse_options(const std::string& input, const std::vector<std::stri
   try {
     app.parse(argv);
   } catch (const CLI::ParseError& e) {
-    throw InputError(input, e.what());
+    throw InputError(input, run::parse_error_message(e, app, "rdmesh"));
   }
+  std::vector<const char*> words{"rdmesh", input.c_str()};
+  for (const std::string& a : args) words.push_back(a.c_str());
+  opt.command_line =
+      "python: " + run::command_line_text(static_cast<int>(words.size()), words.data());
   opt.quiet = true;
   return opt;
 }
 
 py::dict progress_dict(const Progress& p) {
   py::dict d;
+  d["phase"] = p.phase;
   d["vertices"] = p.vertices;
   d["edge_queue"] = p.edge_queue;
   d["facet_queue"] = p.facet_queue;
@@ -80,37 +85,63 @@ py::dict progress_dict(const Progress& p) {
   return d;
 }
 
-/// Criteria, meshing, the fidelity check and the report of a loaded input.
-/// `release_gil`: no Python code in the oracle, so other threads may run.
-PyMesh mesh_input(const run::Options& opt, const run::LoadedInput& input,
-                  const py::object& progress, bool release_gil, double seconds_load) {
-  // No output yet: Mesh.write checks the format against partitions.
-  run::check_fem_options(opt.fem, opt.input, "mesh.msh", opt.surface_only);
-  Criteria criteria = run::resolve_criteria(opt, input);
-  const std::vector<EntitySize> sizes = run::apply_size_options(opt.fem, *input.oracle, criteria);
+/// The progress callback of a run: KeyboardInterrupt (Ctrl-C) and the user's
+/// callback, with the GIL taken for them.
+/// `progress` outlives the run; the std::function holds a pointer to it, as it
+/// is copied without the GIL.
+MeshOptions progress_options(const py::object& progress) {
   MeshOptions options;
-  options.progress = [&progress](const Progress& p) {
+  options.progress = [callback = &progress](const Progress& p) {
     py::gil_scoped_acquire gil;
     if (PyErr_CheckSignals() != 0) throw py::error_already_set();  // KeyboardInterrupt
-    if (!progress.is_none()) progress(progress_dict(p));
+    if (!callback->is_none()) (*callback)(progress_dict(p));
   };
-  run::MeshRun run;
-  {
-    std::optional<py::gil_scoped_release> release;
-    if (release_gil) release.emplace();
-    run = run::mesh_loaded(opt, input, criteria, options);
-  }
+  return options;
+}
+
+/// Criteria, meshing, the fidelity check, the FEM options, the outputs asked
+/// for and the report of a loaded input: the CLI's run (cli/main.cpp) with
+/// exceptions instead of exit codes. `release_gil`: no Python code in the
+/// oracle, so other threads may run.
+PyMesh mesh_input(const run::Options& opt, const run::LoadedInput& input,
+                  const py::object& progress, bool release_gil, double seconds_load) {
+  const MeshOptions options = progress_options(progress);
+  std::optional<py::gil_scoped_release> release;
+  if (release_gil) release.emplace();
+  run::announce(options, "checking the criteria");
+  Criteria criteria = run::resolve_criteria(opt, input);
+  const std::vector<EntitySize> sizes = run::apply_size_options(opt.fem, *input.oracle, criteria);
+  run::MeshRun run = run::mesh_loaded(opt, input, criteria, options);
   run.times.load = seconds_load;
-  if (run.failed() && !opt.keep_bad_mesh) {
+  const bool bad = run.failed();
+  if (!bad || opt.keep_bad_mesh) run::apply_fem(opt, sizes, *input.oracle, options, run);
+  run::write_outputs(opt, *input.oracle, options, !bad || opt.keep_bad_mesh, run);
+  release.reset();
+  if (bad && !opt.keep_bad_mesh) {
     throw FidelityError(opt.input + ": " + run::failure_reason(opt, run) +
                         "; no mesh returned (keep_bad_mesh=True returns it)");
   }
-  run.fem = run::apply_fem_options(opt.fem, sizes, run.result.mesh, *input.oracle);
   PyMesh out;
-  out.report_json = run::run_report(opt, run).dump();
-  out.failed = run.failed();
+  out.report_json = run::run_report(opt, *input.oracle, run).dump();
+  out.failed = bad;
+  out.warnings = run::run_warnings(run.result.stats);
+  for (const std::string& w : out.warnings) {
+    if (PyErr_WarnEx(PyExc_RuntimeWarning, w.c_str(), 1) != 0) throw py::error_already_set();
+  }
   out.mesh = std::move(run.result.mesh);
   return out;
+}
+
+/// Calls `run`, giving the library's bad-input errors the CLI's one-line
+/// message (run::input_error_message).
+template <class Run>
+PyMesh naming_input(const std::string& input, Run run) {
+  try {
+    return run();
+  } catch (const InputError& e) {
+    if (!e.file().empty()) throw;
+    throw InputError(run::input_error_message(e, input));
+  }
 }
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -121,15 +152,20 @@ PyMesh mesh_file(const std::string& path, const std::vector<std::string>& args,
                  const py::object& progress) {
   const auto start = std::chrono::steady_clock::now();
   const run::Options opt = parse_options(path, args);
-  run::LoadedInput input;
-  {
-    py::gil_scoped_release release;
+  return naming_input(path, [&] {
     run::check_paths(opt);
-    input = run::load_input(opt);
-  }
-  PyMesh out = mesh_input(opt, input, progress, true, seconds_since(start));
-  out.input = path;
-  return out;
+    run::check_outputs(opt);
+    run::LoadedInput input;
+    {
+      const MeshOptions options = progress_options(progress);
+      run::announce(options, "reading " + run::printable(opt.input));
+      py::gil_scoped_release release;
+      input = run::load_input(opt);
+    }
+    PyMesh out = mesh_input(opt, input, progress, true, seconds_since(start));
+    out.input = path;
+    return out;
+  });
 }
 
 /// A domain document (the .json format); `functions` and `curves` hold the
@@ -140,6 +176,8 @@ PyMesh mesh_json(const std::string& text, const std::string& origin, const py::d
                  const py::object& progress) {
   const auto start = std::chrono::steady_clock::now();
   const run::Options opt = parse_options(origin, args);
+  run::check_output_names(opt);
+  run::check_outputs(opt);
   ExternalDefinitions external;
   for (const auto& item : functions) {
     const py::tuple t = item.second.cast<py::tuple>();
@@ -163,15 +201,18 @@ PyMesh mesh_json(const std::string& text, const std::string& origin, const py::d
     input.hints = std::move(d.hints);
   }
   const bool pure = external.functions.empty() && external.curves.empty();
-  return mesh_input(opt, input, progress, pure, seconds_since(start));
+  return naming_input(origin,
+                      [&] { return mesh_input(opt, input, progress, pure, seconds_since(start)); });
 }
 
 PyMesh mesh_oracle(PyOracleBase& oracle, const std::vector<std::string>& args,
                    const py::object& progress) {
   const run::Options opt = parse_options("rdmesh.Oracle", args);
+  run::check_output_names(opt);
+  run::check_outputs(opt);
   run::LoadedInput input;
   input.oracle = std::shared_ptr<DomainOracle>(&oracle, [](DomainOracle*) {});  // lent
-  return mesh_input(opt, input, progress, false, 0.0);
+  return naming_input(opt.input, [&] { return mesh_input(opt, input, progress, false, 0.0); });
 }
 
 }  // namespace
@@ -189,6 +230,7 @@ PYBIND11_MODULE(_rdmesh, m) {
   bind_mesh(m);
   bind_oracle(m);
   m.def("_option_names", &option_names);
+
   m.def("_mesh_file", &mesh_file, py::arg("path"), py::arg("args"), py::arg("progress"));
   m.def("_mesh_json", &mesh_json, py::arg("text"), py::arg("origin"), py::arg("functions"),
         py::arg("curves"), py::arg("args"), py::arg("progress"));

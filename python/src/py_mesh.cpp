@@ -3,9 +3,13 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <CLI/CLI.hpp>
 #include <filesystem>
+#include <string>
 #include <vector>
 
+#include "rdmesh/arguments.h"
+#include "rdmesh/errors.h"
 #include "rdmesh/mesh_writers.h"
 #include "rdmesh/picture_args.h"
 #include "rdmesh/run_setup.h"
@@ -48,6 +52,20 @@ auto rows(Vector TetMesh::*member, std::size_t columns) {
     const Vector& v = self.cast<const PyMesh&>().mesh.*member;
     return view<T>(v.data(), v.size(), columns, self);
   };
+}
+
+/// --binary, --ascii and --format as the CLI parses them ("--binary", "--format=msh22").
+WriteOptions parse_write_options(const std::string& path, const std::vector<std::string>& args) {
+  CLI::App app;
+  WriteOptions write;
+  run::add_write_options(app, write);
+  std::vector<std::string> argv(args.rbegin(), args.rend());  // CLI11 wants them reversed
+  try {
+    app.parse(argv);
+  } catch (const CLI::ParseError& e) {
+    throw InputError(path, run::parse_error_message(e, app, "rdmesh"));
+  }
+  return write;
 }
 
 }  // namespace
@@ -98,14 +116,18 @@ void bind_mesh(py::module_& m) {
           "report",
           [](const PyMesh& p) { return py::module_::import("json").attr("loads")(p.report_json); },
           "the run's JSON report (as --report writes it) as a dict")
+      .def_property_readonly(
+          "warnings", [](const PyMesh& p) { return p.warnings; },
+          "the run's warnings (also issued as RuntimeWarning), as the CLI prints them")
       .def(
-          "write",
-          [](const PyMesh& p, const py::object& path) {
+          "_write",
+          [](const PyMesh& p, const py::object& path, const std::vector<std::string>& args) {
             run::Options opt;
             opt.input = p.input;
             opt.output = py::str(py::module_::import("os").attr("fspath")(path));
+            opt.write = parse_write_options(opt.output, args);
             if (!p.input.empty() && std::filesystem::exists(p.input)) run::check_paths(opt);
-            (void)format_from_path(opt.output);
+            run::check_output_format(opt.output, opt.write);
             if (!p.mesh.tet_partition.empty()) {  // Medit cannot carry them
               run::FemOptions fem;
               fem.partitions = 1;
@@ -113,11 +135,9 @@ void bind_mesh(py::module_& m) {
             }
             run::check_writable(opt.output);
             py::gil_scoped_release release;
-            write_mesh(p.mesh, opt.output);
+            write_mesh(p.mesh, opt.output, opt.write);
           },
-          py::arg("path"),
-          "Writes .msh (Gmsh 4.1), .mesh (Medit) or .vtu (VTK) as the CLI does, atomically; "
-          "never over the input file")
+          py::arg("path"), py::arg("args"))
       .def(
           "picture",
           [](const PyMesh& p, const py::object& path, const std::string& view_dir,
@@ -135,7 +155,7 @@ void bind_mesh(py::module_& m) {
             py::gil_scoped_release release;
             run::write_picture(p.mesh, args, title);
           },
-          py::arg("path"), py::arg("view") = "iso", py::arg("size") = "1600x900",
+          py::arg("path"), py::arg("view") = "iso", py::arg("picture_size") = "1600x900",
           py::arg("cut") = "",
           "Writes a PNG picture of the mesh (the boundary and a cut view), as rdmesh --picture");
 }

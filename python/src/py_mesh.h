@@ -5,6 +5,7 @@
 #include <pybind11/pybind11.h>
 
 #include <string>
+#include <vector>
 
 #include "rdmesh/tet_mesh.h"
 
@@ -15,6 +16,7 @@ struct PyMesh {
   std::string report_json;  ///< run_report(), parsed by Python on access
   std::string input;        ///< the input file, never overwritten by write(); empty: none
   bool failed = false;      ///< kept with keep_bad_mesh although the run failed
+  std::vector<std::string> warnings;  ///< run::run_warnings
 };
 
 void bind_mesh(pybind11::module_& m);

@@ -21,13 +21,29 @@ def shared_data_dir():
     return beside if beside.is_dir() else None
 
 
+def in_ci():
+    return os.environ.get("CI", "") not in ("", "0")
+
+
+def needed(what):
+    """Skips the test for lack of `what`, or fails it when CI is set."""
+    if in_ci():
+        pytest.fail(f"{what} is absent; CI is set, so this is a failure, not a skip")
+    pytest.skip(f"{what} is absent")
+
+
+def needed_module(name):
+    """The module `name` (meshio...), imported; skips (fails under CI) when absent."""
+    try:
+        return __import__(name)
+    except ImportError:
+        needed(f"the Python module {name}")
+
+
 def shared_data(relative):
     """The path of `relative` in the data folder; skips (fails under CI) when absent."""
     folder = shared_data_dir()
     path = folder / relative if folder else None
     if path is None or not path.exists():
-        what = f"shared data file {relative}"
-        if os.environ.get("CI", "") not in ("", "0"):
-            pytest.fail(f"{what} is absent; CI is set, so this is a failure, not a skip")
-        pytest.skip(f"{what} is absent")
+        needed(f"shared data file {relative}")
     return path

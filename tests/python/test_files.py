@@ -9,7 +9,7 @@ import pytest
 
 import rdmesh
 from mesh_checks import boundary_is_closed, signed_volumes, volume_per_label
-from shared_data import shared_data
+from shared_data import needed, needed_module, shared_data
 
 SAMPLES = pathlib.Path(__file__).resolve().parents[2] / "samples"
 STEP = "step/cadquery_red_cube_blue_cylinder.step"
@@ -31,7 +31,7 @@ def test_step_solids_names_and_volumes():
 def test_same_mesh_as_the_command_line(tmp_path):
     cli = os.environ.get("RDMESH_CLI")
     if not cli:
-        pytest.skip("RDMESH_CLI (the rdmesh executable) is not set")
+        needed("RDMESH_CLI (the rdmesh executable)")
     step = shared_data(STEP)
     subprocess.run([cli, str(step), "-o", str(tmp_path / "cli.mesh"), "-q", "--size", "3",
                     "--facet-distance", "0.2", "--no-exude"], check=True)
@@ -49,7 +49,7 @@ def test_triangle_mesh():
 
 
 def test_write_and_meshio_round_trip(tmp_path):
-    meshio = pytest.importorskip("meshio")
+    meshio = needed_module("meshio")
     m = rdmesh.mesh_domain(SAMPLES / "cube.json", size=0.25)
     assert len(m.corners) == 8 and len(m.curve_names) == 12
     for ext in ("msh", "vtu", "mesh"):
@@ -96,7 +96,7 @@ def test_report_is_the_cli_report():
 
 def test_picture(tmp_path):
     m = rdmesh.mesh_domain(SAMPLES / "sphere.json", size=0.3)
-    m.picture(tmp_path / "sphere.png", view="z", size="640x400")
+    m.picture(tmp_path / "sphere.png", view="z", picture_size="640x400")
     data = (tmp_path / "sphere.png").read_bytes()
     assert data[:8] == b"\x89PNG\r\n\x1a\n"
     assert int.from_bytes(data[16:20], "big") == 640 and int.from_bytes(data[20:24], "big") == 400
@@ -109,7 +109,7 @@ def test_partitions(tmp_path):
     with pytest.raises(rdmesh.InputError, match="Medit"):
         m.write(tmp_path / "parts.mesh")
     m.write(tmp_path / "parts.vtu")
-    meshio = pytest.importorskip("meshio")
+    meshio = needed_module("meshio")
     assert np.array_equal(m.to_meshio().cell_data["partition"][0], m.tet_partition)
     with pytest.raises(rdmesh.InputError, match="surface-only"):
         rdmesh.mesh_domain(SAMPLES / "sphere.json", partitions=2, surface_only=True)
