@@ -43,7 +43,7 @@ import os as _os
 
 from . import _rdmesh
 from ._rdmesh import (Error, FidelityError, InputError, InternalError, Mesh, Oracle,
-                      OracleError, OutputError)
+                      OracleError, OutputError, __version__)
 
 __all__ = ["mesh", "mesh_implicit", "mesh_domain", "mesh_oracle", "to_meshio", "Mesh",
            "Oracle", "Error", "InputError", "OracleError", "OutputError", "InternalError",

@@ -221,6 +221,7 @@ PyMesh mesh_oracle(PyOracleBase& oracle, const std::vector<std::string>& args,
 PYBIND11_MODULE(_rdmesh, m) {
   using namespace rdmesh::python;
   m.doc() = "rdmesh's C++ side; use the rdmesh package";
+  m.attr("__version__") = RDMESH_VERSION;
   const py::object error = py::register_exception<rdmesh::Error>(m, "Error", PyExc_RuntimeError);
   py::register_exception<rdmesh::InputError>(m, "InputError", error.ptr());
   py::register_exception<rdmesh::OracleError>(m, "OracleError", error.ptr());

@@ -63,7 +63,7 @@ def test_outputs_as_the_cli_writes_them(tmp_path):
     for key in ("rdmesh_version", "input_sha256", "criteria", "vertices", "tets", "fidelity",
                 "refinement", "patches", "subdomains"):
         assert py[key] == ref[key], key
-    assert py["rdmesh_version"] == cli_version()
+    assert py["rdmesh_version"] == cli_version() == rdmesh.__version__
     assert py["command_line"].startswith("python: rdmesh ") and "--binary" in py["command_line"]
     assert m.report["criteria"] == py["criteria"] and m.report["tets"] == len(m.tets)
 
@@ -124,3 +124,11 @@ def test_entity_sizes_on_cad_defaults(tmp_path):
     (tmp_path / "sizes.json").write_text(json.dumps({"face:1": 1, "grade": 1.5}))
     n = rdmesh.mesh(step, size=3, sizes=tmp_path / "sizes.json")
     assert n.report["entity_sizes"][0]["entity"] == "face:1"
+
+
+def test_one_version_everywhere():
+    import tomllib
+
+    root = pathlib.Path(__file__).resolve().parents[2]
+    project = tomllib.loads((root / "pyproject.toml").read_text())["project"]
+    assert project["version"] == rdmesh.__version__ == cli_version()
