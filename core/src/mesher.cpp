@@ -8,10 +8,10 @@
 #include <set>
 #include <string>
 
+#include "optimize/sliver_exuder.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/number_text.h"
-
-#include "optimize/sliver_exuder.h"
+#include "rdmesh/tet_improvement.h"
 #include "refiner.h"
 
 namespace rdmesh {
@@ -177,7 +177,21 @@ MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& given,
   result.stats.seconds_refine = refine;
   result.stats.seconds_extract = seconds_since(t);
   // A run stopped by its time limit reports what it reached, even nothing.
-  if (!result.stats.time_limit_reached) check_output(oracle, options.surface_only, result);
+  if (result.stats.time_limit_reached) return result;
+  check_output(oracle, options.surface_only, result);
+  TetImprovementOptions improvement = options.improvement;
+  if (options.time_limit_seconds > 0) {
+    // The improvement gets what is left of the run's time (nothing: it does not run).
+    const double left = options.time_limit_seconds - seconds_since(run_start);
+    if (left <= 0) improvement.enabled = false;
+    if (improvement.time_limit_seconds <= 0 || improvement.time_limit_seconds > left) {
+      improvement.time_limit_seconds = std::max(left, 1e-9);
+    }
+  }
+  if (improvement.enabled && !options.surface_only) {
+    announce(options, "improving the tetrahedra");
+    result.improvement = improve_tets(result.mesh, improvement);
+  }
   return result;
 }
 

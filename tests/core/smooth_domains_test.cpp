@@ -26,10 +26,12 @@ using test::connected_components;
 using test::patch_triangles;
 
 /// Refinement's own output: labels at circumcenters and R5.1 are properties of
-/// D|O before sliver exudation, which changes tets (see exudation_test.cpp).
+/// D|O before sliver exudation and the final improvement, which change tets
+/// (see exudation_test.cpp and tet_improvement_test.cpp).
 MeshOptions refinement_only() {
   MeshOptions o;
   o.exudation.enabled = false;
+  o.improvement.enabled = false;
   return o;
 }
 

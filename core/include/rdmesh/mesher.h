@@ -16,8 +16,8 @@ namespace rdmesh {
 /// Snapshot handed to the progress callback.
 struct Progress {
   /// The phase running: "protecting sharp features", "inserting initial points",
-  /// "refining", "exuding slivers" or "extracting the mesh". Each phase is
-  /// announced as it starts, with zero counts; the counts come from the insertions.
+  /// "refining", "exuding slivers", "extracting the mesh" or "improving the tetrahedra". Each phase
+  /// is announced as it starts, with zero counts; the counts come from the insertions.
   const char* phase = "refining";
   std::size_t vertices = 0;       ///< vertices in the triangulation
   std::size_t edge_queue = 0;     ///< restricted edges waiting (R1, R2)
@@ -45,6 +45,9 @@ struct MeshOptions {
   std::function<void(const Progress&)> progress;
   /// Sliver exudation after refinement (on by default).
   ExudationOptions exudation;
+  /// Local improvement of the extracted tetrahedra (on by default; rdmesh/tet_improvement.h):
+  /// the output is then no longer the restricted (weighted) Delaunay triangulation.
+  TetImprovementOptions improvement;
   FeatureMethod features = FeatureMethod::kProtectingBalls;
   /// Mesh the patches only (D|S and D|L, no tetrahedra): every facet whose
   /// dual Voronoi edge crosses a patch is restricted, whatever the labels at
@@ -108,6 +111,7 @@ struct MeshResult {
   TetMesh mesh;
   RefinementStats stats;
   ExudationStats exudation;  ///< ran == false when disabled
+  TetImprovementStats improvement;  ///< ran == false when disabled
 };
 
 /// Runs Delaunay refinement on `oracle` until every rule R3-R5 is satisfied

@@ -1,5 +1,6 @@
 // Options and statistics of the mesh optimizers that run after Delaunay
-// refinement (RR-7912 section 6): sliver exudation [CDE+00].
+// refinement: sliver exudation (RR-7912 section 6, [CDE+00]) on the
+// triangulation, then a local improvement of the extracted tetrahedra.
 #pragma once
 
 #include <array>
@@ -69,6 +70,44 @@ struct ExudationStats {
   std::size_t perturb_moves_accepted = 0;  ///< vertex moves kept
   double min_dihedral_after_perturb_deg = 0;  ///< after the first pumping and the perturbation
   double perturb_seconds = 0;                 ///< included in `seconds`
+  bool time_limit_reached = false;
+  double seconds = 0;
+};
+
+/// The final local improvement of the extracted tetrahedra (tet_improvement.h):
+/// topological flips inside one subdomain, moves of vertices on no boundary
+/// triangle and insertions of new ones, driven by the worst tetrahedra. The boundary triangles,
+/// feature edges, corners, labels and each subdomain's volume stay as they
+/// are; the mesh is then no longer a (weighted) Delaunay triangulation.
+struct TetImprovementOptions {
+  bool enabled = true;
+  /// Tetrahedra whose smallest dihedral angle is below this (degrees) are treated, worst first.
+  double bound_deg = 20;
+  /// Passes over the tetrahedra below the bound (each pass treats those left
+  /// by the previous one, with the tetrahedra the changes created).
+  int max_sweeps = 6;
+  /// New vertices: at most this fraction of the tetrahedra (and 10 more).
+  double max_insertions = 0.01;
+  /// Stop after this many seconds; 0 = no limit (the result is then no longer
+  /// independent of the machine's speed).
+  double time_limit_seconds = 0;
+};
+
+/// What the improvement did, for the report. Angles over all output tetrahedra.
+struct TetImprovementStats {
+  bool ran = false;
+  double min_dihedral_before_deg = 0;
+  double min_dihedral_after_deg = 0;
+  DihedralHistogram histogram_before{};
+  DihedralHistogram histogram_after{};
+  std::size_t tets_before = 0;
+  std::size_t tets_after = 0;
+  std::size_t face_flips = 0;     ///< 2-3 flips (a face replaced by an edge)
+  std::size_t edge_removals = 0;  ///< an edge and its ring of n tets replaced by 2n - 4 tets
+  std::size_t vertex_moves = 0;   ///< vertices on no boundary triangle moved
+  /// Vertices added inside a tetrahedron and its neighbours (numbered after the others).
+  std::size_t vertex_insertions = 0;
+  int sweeps = 0;
   bool time_limit_reached = false;
   double seconds = 0;
 };

@@ -1,0 +1,141 @@
+// improve_tets (rdmesh/tet_improvement.h): sweeps over the tetrahedra below
+// the bound, worst first (ties by number). For each one still alive and still
+// below it: the best legal flip among the removals of its six edges and the
+// 2-3 flips of its four faces, if one strictly raises the smallest angle of
+// what it replaces; else the smoothing of its free vertices; if it is still
+// there and below the bound, a new vertex inside it and its neighbours.
+// Vertices keep their indices; new ones come after them.
+#include "rdmesh/tet_improvement.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <utility>
+#include <vector>
+
+#include "rdmesh/errors.h"
+#include "tet_flips.h"
+#include "tet_insertion.h"
+#include "tet_shape.h"
+#include "tet_smoothing.h"
+#include "tet_topology.h"
+
+namespace rdmesh {
+namespace {
+
+using detail::LocalChange;
+using detail::TetTopology;
+
+void measure(const TetMesh& mesh, double& min_deg, DihedralHistogram& histogram,
+             std::size_t& tets) {
+  min_deg = mesh.tets.empty() ? 0 : std::numeric_limits<double>::infinity();
+  histogram.fill(0);
+  for (const auto& t : mesh.tets) {
+    const double q = detail::min_dihedral(mesh.vertices[t[0]], mesh.vertices[t[1]],
+                                          mesh.vertices[t[2]], mesh.vertices[t[3]]);
+    min_deg = std::min(min_deg, q);
+    detail::add_to_histogram(histogram, q);
+  }
+  tets = mesh.tets.size();
+}
+
+/// The best flip touching tetrahedron t; false when none improves.
+bool best_flip(const TetTopology& topo, int t, LocalChange& best) {
+  const detail::Tet q = topo.tet(t);
+  LocalChange change;
+  bool found = false;
+  for (const auto& e : kTetEdges) {
+    if (detail::plan_edge_removal(topo, q[e[0]], q[e[1]], change) &&
+        (!found || change.after > best.after)) {
+      best = std::move(change);
+      found = true;
+    }
+  }
+  for (int i = 0; i < 4; ++i) {
+    if (detail::plan_face_flip(topo, t, i, change) && (!found || change.after > best.after)) {
+      best = std::move(change);
+      found = true;
+    }
+  }
+  return found;
+}
+
+}  // namespace
+
+TetImprovementStats improve_tets(TetMesh& mesh, const TetImprovementOptions& options) {
+  if (!mesh.tet_mid_nodes.empty() || !mesh.tet_partition.empty()) {
+    throw InputError("tetrahedra are improved before second-order nodes and partitions are made");
+  }
+  // The smallest dihedral angle of a tetrahedron is at most arccos(1/3) = 70.53 degrees.
+  if (!(options.bound_deg > 0 && options.bound_deg <= 70.5) || options.max_sweeps < 0 ||
+      !(options.max_insertions >= 0) || !std::isfinite(options.max_insertions) ||
+      !(options.time_limit_seconds >= 0) || !std::isfinite(options.time_limit_seconds)) {
+    throw InputError(
+        "improvement options: the bound must be in (0, 70.5] degrees, the sweeps "
+        ">= 0, the insertions a fraction >= 0 and the time limit a number of "
+        "seconds >= 0");
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const auto elapsed = [&] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  TetImprovementStats stats;
+  stats.ran = true;
+  measure(mesh, stats.min_dihedral_before_deg, stats.histogram_before, stats.tets_before);
+
+  TetTopology topo(mesh);
+  const auto max_insertions =
+      static_cast<std::size_t>(options.max_insertions * static_cast<double>(mesh.tets.size())) + 10;
+  for (int sweep = 0; sweep < options.max_sweeps && !stats.time_limit_reached; ++sweep) {
+    std::vector<std::pair<double, int>> bad;
+    for (std::size_t t = 0; t < topo.size(); ++t) {
+      const int id = static_cast<int>(t);
+      if (topo.alive(id) && topo.quality(id) < options.bound_deg)
+        bad.push_back({topo.quality(id), id});
+    }
+    if (bad.empty()) break;
+    std::sort(bad.begin(), bad.end());
+    ++stats.sweeps;
+    std::size_t changes = 0;
+    for (const auto& [q, t] : bad) {
+      if (options.time_limit_seconds > 0 && elapsed() > options.time_limit_seconds) {
+        stats.time_limit_reached = true;
+        break;
+      }
+      if (!topo.alive(t) || !(topo.quality(t) < options.bound_deg)) continue;
+      LocalChange change;
+      if (best_flip(topo, t, change)) {
+        (change.removed.size() == 2 && change.added.size() == 3 ? stats.face_flips
+                                                                : stats.edge_removals)++;
+        detail::apply(topo, change);
+        ++changes;
+        continue;
+      }
+      const detail::Tet vertices = topo.tet(t);
+      for (const int v : vertices) {
+        if (detail::smooth_vertex(topo, v)) {
+          ++stats.vertex_moves;
+          ++changes;
+        }
+      }
+      Point3 where;
+      if (topo.alive(t) && topo.quality(t) < options.bound_deg &&
+          stats.vertex_insertions < max_insertions &&
+          detail::plan_insertion(topo, t, topo.vertex_count(), where, change)) {
+        const int v = topo.add_vertex(where);
+        detail::apply(topo, change);
+        (void)detail::smooth_vertex(topo, v);
+        ++stats.vertex_insertions;
+        ++changes;
+      }
+    }
+    if (changes == 0) break;
+  }
+  topo.write_to(mesh);
+  measure(mesh, stats.min_dihedral_after_deg, stats.histogram_after, stats.tets_after);
+  stats.seconds = elapsed();
+  return stats;
+}
+
+}  // namespace rdmesh

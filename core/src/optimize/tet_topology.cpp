@@ -1,0 +1,127 @@
+#include "tet_topology.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <algorithm>
+
+#include "tet_shape.h"
+
+namespace rdmesh::detail {
+
+bool positively_oriented(const Point3& p0, const Point3& p1, const Point3& p2, const Point3& p3) {
+  using P = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
+  return CGAL::orientation(P(p0.x, p0.y, p0.z), P(p1.x, p1.y, p1.z), P(p2.x, p2.y, p2.z),
+                           P(p3.x, p3.y, p3.z)) == CGAL::POSITIVE;
+}
+
+double min_dihedral(const Point3& p0, const Point3& p1, const Point3& p2, const Point3& p3) {
+  return cosine_to_degrees(max_dihedral_cosine(p0, p1, p2, p3));
+}
+
+bool even_order(const Tet& t, const Tet& order) {
+  int pos[4];
+  for (int k = 0; k < 4; ++k)
+    pos[k] = static_cast<int>(std::find(t.begin(), t.end(), order[k]) - t.begin());
+  int inversions = 0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) inversions += pos[i] > pos[j];
+  return inversions % 2 == 0;
+}
+
+TetTopology::Key TetTopology::edge_key(int a, int b) {
+  return {std::min(a, b), std::max(a, b), -1};
+}
+
+TetTopology::Key TetTopology::face_key(int a, int b, int c) {
+  Key k{a, b, c};
+  std::sort(k.begin(), k.end());
+  return k;
+}
+
+TetTopology::TetTopology(const TetMesh& mesh)
+    : points_(mesh.vertices), incident_(mesh.vertices.size()), fixed_(mesh.vertices.size(), 0) {
+  tets_.reserve(mesh.tets.size() + mesh.tets.size() / 8);
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t) add(mesh.tets[t], mesh.tet_subdomain[t].value);
+  for (const auto& f : mesh.triangles) {
+    faces_.insert(face_key(f[0], f[1], f[2]));
+    for (const auto& e : kTriangleEdges) edges_.insert(edge_key(f[e[0]], f[e[1]]));
+    for (const int v : f) fixed_[v] = 1;
+  }
+  for (const auto& e : mesh.edges) {
+    edges_.insert(edge_key(e[0], e[1]));
+    fixed_[e[0]] = fixed_[e[1]] = 1;
+  }
+  for (const int v : mesh.corner_vertices) fixed_[v] = 1;
+}
+
+bool TetTopology::constrained_face(int a, int b, int c) const {
+  return faces_.count(face_key(a, b, c)) > 0;
+}
+
+bool TetTopology::constrained_edge(int a, int b) const { return edges_.count(edge_key(a, b)) > 0; }
+
+std::vector<int> TetTopology::tets_with_edge(int a, int b) const {
+  std::vector<int> out;
+  for (const int t : incident_[a]) {
+    const Tet& q = tets_[t];
+    if (std::find(q.begin(), q.end(), b) != q.end()) out.push_back(t);
+  }
+  return out;
+}
+
+int TetTopology::across(int t, int a, int b, int c) const {
+  for (const int u : incident_[a]) {
+    if (u == t) continue;
+    const Tet& q = tets_[u];
+    if (std::find(q.begin(), q.end(), b) != q.end() && std::find(q.begin(), q.end(), c) != q.end())
+      return u;
+  }
+  return -1;
+}
+
+double TetTopology::tet_quality(const Tet& t) const {
+  return min_dihedral(points_[t[0]], points_[t[1]], points_[t[2]], points_[t[3]]);
+}
+
+int TetTopology::add(const Tet& t, int label) {
+  const int id = static_cast<int>(tets_.size());
+  tets_.push_back(t);
+  labels_.push_back(label);
+  quality_.push_back(tet_quality(t));
+  alive_.push_back(1);
+  for (const int v : t) incident_[v].push_back(id);
+  return id;
+}
+
+void TetTopology::remove(int t) {
+  alive_[t] = 0;
+  for (const int v : tets_[t]) {
+    auto& list = incident_[v];
+    list.erase(std::find(list.begin(), list.end(), t));
+  }
+}
+
+int TetTopology::add_vertex(const Point3& p) {
+  points_.push_back(p);
+  incident_.emplace_back();
+  fixed_.push_back(0);
+  return static_cast<int>(points_.size()) - 1;
+}
+
+void TetTopology::move(int v, const Point3& p) {
+  points_[v] = p;
+  for (const int t : incident_[v]) quality_[t] = tet_quality(tets_[t]);
+}
+
+void TetTopology::write_to(TetMesh& mesh) const {
+  mesh.vertices = points_;
+  mesh.tets.clear();
+  mesh.tet_subdomain.clear();
+  for (std::size_t t = 0; t < tets_.size(); ++t) {
+    if (!alive_[t]) continue;
+    mesh.tets.push_back(tets_[t]);
+    mesh.tet_subdomain.push_back(SubdomainId{labels_[t]});
+  }
+}
+
+}  // namespace rdmesh::detail

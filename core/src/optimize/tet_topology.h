@@ -1,0 +1,88 @@
+// Private to core/: a tetrahedral mesh that local improvement can change,
+// with what must not change. Tetrahedra are numbered as they are created
+// (removed ones stay dead), vertices keep their indices. A tetrahedron's
+// vertex order is always positive (CGAL's orientation of its four points).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <unordered_set>
+#include <vector>
+
+#include "rdmesh/geometry.h"
+#include "rdmesh/tet_mesh.h"
+
+namespace rdmesh::detail {
+
+using Tet = std::array<int, 4>;
+
+/// True when (p0, p1, p2, p3) is positively oriented by CGAL's exact predicate
+/// (det(p1 - p0, p2 - p0, p3 - p0) > 0).
+bool positively_oriented(const Point3& p0, const Point3& p1, const Point3& p2, const Point3& p3);
+
+/// The smallest dihedral angle of a tetrahedron, in degrees (0 when flat).
+double min_dihedral(const Point3& p0, const Point3& p1, const Point3& p2, const Point3& p3);
+
+/// True when (t[i]) for the vertices `order` (a permutation of t's vertices)
+/// is an even permutation of t: the order is positive when t is.
+bool even_order(const Tet& t, const Tet& order);
+
+class TetTopology {
+ public:
+  /// Copies the tetrahedra of `mesh`; its triangles, feature edges and corners are the constraints.
+  explicit TetTopology(const TetMesh& mesh);
+
+  std::size_t size() const { return tets_.size(); }  ///< tetrahedra ever created
+  bool alive(int t) const { return alive_[t]; }
+  const Tet& tet(int t) const { return tets_[t]; }
+  int label(int t) const { return labels_[t]; }
+  double quality(int t) const { return quality_[t]; }  ///< smallest dihedral angle, degrees
+  const Point3& point(int v) const { return points_[v]; }
+  int vertex_count() const { return static_cast<int>(points_.size()); }
+  const std::vector<int>& tets_of(int v) const { return incident_[v]; }  ///< alive ones
+
+  /// A vertex on a triangle, a feature edge or a corner: it never moves.
+  bool fixed(int v) const { return fixed_[v]; }
+  bool constrained_face(int a, int b, int c) const;
+  bool constrained_edge(int a, int b) const;
+
+  /// Alive tetrahedra holding both a and b (in the order of a's list).
+  std::vector<int> tets_with_edge(int a, int b) const;
+  /// The alive tetrahedron other than `t` holding face (a, b, c); -1 when none.
+  int across(int t, int a, int b, int c) const;
+
+  /// Adds a positively oriented tetrahedron; returns its number.
+  int add(const Tet& t, int label);
+  void remove(int t);
+  /// Adds a free vertex (in no tetrahedron yet); returns its index.
+  int add_vertex(const Point3& p);
+  /// Moves vertex v (not fixed) and updates the qualities of its tetrahedra.
+  void move(int v, const Point3& p);
+  double tet_quality(const Tet& t) const;
+
+  /// Writes the alive tetrahedra (in creation order) and the vertex positions back.
+  void write_to(TetMesh& mesh) const;
+
+ private:
+  using Key = std::array<int, 3>;  ///< sorted vertices; an edge's third is -1
+  struct KeyHash {
+    std::size_t operator()(const Key& k) const {
+      std::uint64_t h = 0;
+      for (const int v : k) h = (h ^ static_cast<std::uint32_t>(v)) * 0x9e3779b97f4a7c15ULL;
+      return static_cast<std::size_t>(h ^ (h >> 29));
+    }
+  };
+  static Key edge_key(int a, int b);
+  static Key face_key(int a, int b, int c);
+
+  std::vector<Point3> points_;
+  std::vector<Tet> tets_;
+  std::vector<int> labels_;
+  std::vector<double> quality_;
+  std::vector<char> alive_;
+  std::vector<std::vector<int>> incident_;
+  std::vector<char> fixed_;
+  std::unordered_set<Key, KeyHash> faces_, edges_;
+};
+
+}  // namespace rdmesh::detail
