@@ -55,7 +55,8 @@ int mesh_command(const rdmesh::run::Options& opt) {
   progress.finish();
   if (!opt.quiet) {
     std::cout << format_summary(mesh_run.quality) << run::format_fem_summary(mesh_run.fem)
-              << run::format_run_summary(opt, result.stats, result.exudation, mesh_run.times,
+              << run::format_run_summary(opt, result.stats, result.exudation, result.improvement,
+                                         mesh_run.times,
                                          !bad || opt.keep_bad_mesh);
   }
   for (const std::string& warning : run::run_warnings(result.stats)) {

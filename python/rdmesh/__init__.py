@@ -13,6 +13,7 @@ Options are the command line's (rdmesh --help), with underscores: size,
 edge_size, facet_size, cell_size, facet_distance, facet_angle, radius_edge,
 min_size, max_elements, features ("protect" or "refine"), surface_only, heal,
 feature_angle, exude (default True; False is --no-exude), exude_time_limit,
+optimize (default True; False is --no-optimize),
 time_limit, keep_bad_mesh, check ("cheap" or "full"), order (1, or 2: 10-node
 tetrahedra), partitions (METIS), size_on ("face:12=0.5", or a list of them),
 sizes (a .json file), grade; and what the run writes, as the CLI: output (a
@@ -32,6 +33,7 @@ RuntimeWarning and kept in Mesh.warnings.
 
 progress(dict) is called as each phase starts ("reading ...", "checking the
 criteria", "protecting sharp features", "refining", "exuding slivers",
+"improving the tetrahedra",
 "checking the mesh against the model", "writing ...", as the CLI's progress
 line) with phase, vertices, edge_queue, facet_queue, cell_queue and
 elapsed_seconds, and every few thousand insertions while refining.
@@ -49,11 +51,13 @@ __all__ = ["mesh", "mesh_implicit", "mesh_domain", "mesh_oracle", "to_meshio", "
            "Oracle", "Error", "InputError", "OracleError", "OutputError", "InternalError",
            "FidelityError"]
 
-# Python keyword -> (CLI long name, takes a value); exude=False is --no-exude.
+# Python keyword -> (CLI long name, takes a value); exude=False is --no-exude,
+# optimize=False --no-optimize.
 _OPTIONS = {name.replace("-", "_"): (name, takes_value)
             for name, takes_value in _rdmesh._option_names()}
-_OPTIONS.pop("no_exude", None)
-_OPTIONS["exude"] = ("no-exude", None)
+for _flag in ("exude", "optimize"):
+    _OPTIONS.pop("no_" + _flag, None)
+    _OPTIONS[_flag] = ("no-" + _flag, None)
 
 
 def _cli_args(options):
@@ -63,11 +67,11 @@ def _cli_args(options):
         if key not in _OPTIONS:
             raise TypeError(f"unknown option {key!r} (options: {', '.join(sorted(_OPTIONS))})")
         name, takes_value = _OPTIONS[key]
-        if takes_value is None:  # exude
+        if takes_value is None:  # exude, optimize
             if not isinstance(value, bool):
                 raise TypeError(f"{key} must be True or False")
             if not value:
-                args.append("--no-exude")
+                args.append("--" + name)
         elif not takes_value:
             if not isinstance(value, bool):
                 raise TypeError(f"{key} must be True or False")

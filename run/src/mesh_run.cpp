@@ -14,6 +14,7 @@ MeshRun mesh_loaded(const Options& opt, const LoadedInput& input, const Criteria
   MeshRun run;
   run.criteria = criteria;
   base.exudation = exudation_options(opt);
+  base.improvement = improvement_options(opt);
   base.features = opt.features;
   base.surface_only = opt.surface_only;
   base.time_limit_seconds = opt.time_limit;
@@ -47,7 +48,8 @@ std::string failure_reason(const Options& opt, const MeshRun& run) {
 }
 
 nlohmann::json run_report(const Options& opt, const DomainOracle& oracle, const MeshRun& run) {
-  return report_json(opt, run.criteria, oracle, run.result.stats, run.result.exudation, run.quality,
+  return report_json(opt, run.criteria, oracle, run.result.stats, run.result.exudation,
+                     run.result.improvement, run.quality,
                      run.fidelity, run.times, run.fem);
 }
 

@@ -91,6 +91,9 @@ void add_options(CLI::App& app, Options& opt) {
   app.add_option("--exude-time-limit", opt.exude_time_limit,
                  "Stop sliver exudation after this many seconds (default: no limit)")
       ->check(seconds);
+  app.add_flag("--no-optimize", opt.no_optimize,
+               "Keep the restricted Delaunay tetrahedra: no final flips and vertex moves "
+               "against the worst dihedral angles");
   app.add_option("--report", opt.report, "Write a JSON report of the run to this file");
   app.add_flag("-q,--quiet", opt.quiet, "No progress and no summary");
   app.add_flag("--heal", opt.heal,
@@ -295,6 +298,12 @@ ExudationOptions exudation_options(const Options& opt) {
   return o;
 }
 
+TetImprovementOptions improvement_options(const Options& opt) {
+  TetImprovementOptions o;
+  o.enabled = !opt.no_optimize;
+  return o;
+}
+
 namespace {
 
 /// A uniform size as its value; a varying one as {"varying": true, "min", "max"} over
@@ -339,6 +348,7 @@ nlohmann::json criteria_json(const Options& opt, const Criteria& criteria, const
       {"surface_only", opt.surface_only},
       {"exudation", !opt.no_exude && !opt.surface_only},
       {"exude_time_limit_s", opt.exude_time_limit},
+      {"optimize", !opt.no_optimize && !opt.surface_only},
       {"time_limit_s", opt.time_limit},
       {"check", opt.full_check || !opt.report.empty() ? "full" : "cheap"}};
   if (is_triangle_mesh(opt.input)) c["feature_angle_deg"] = opt.feature_angle;
@@ -350,7 +360,7 @@ nlohmann::json criteria_json(const Options& opt, const Criteria& criteria, const
 
 nlohmann::json report_json(const Options& opt, const Criteria& criteria, const DomainOracle& oracle,
                            const RefinementStats& stats, const ExudationStats& exudation,
-                           const QualityReport& quality,
+                           const TetImprovementStats& improvement, const QualityReport& quality,
                            const std::optional<FidelityReport>& fidelity, const RunTimes& times,
                            const FemResults& fem) {
   nlohmann::json j = to_json(quality);
@@ -397,12 +407,28 @@ nlohmann::json report_json(const Options& opt, const Criteria& criteria, const D
                     {"moves_accepted", exudation.moves_accepted},
                     {"time_limit_reached", exudation.time_limit_reached},
                     {"seconds", exudation.seconds}};
+  j["optimization"] = {{"ran", improvement.ran},
+                       {"min_dihedral_before_deg", improvement.min_dihedral_before_deg},
+                       {"min_dihedral_after_deg", improvement.min_dihedral_after_deg},
+                       {"histogram_bucket_deg", 5},
+                       {"histogram_before", improvement.histogram_before},
+                       {"histogram_after", improvement.histogram_after},
+                       {"tets_before", improvement.tets_before},
+                       {"tets_after", improvement.tets_after},
+                       {"face_flips", improvement.face_flips},
+                       {"edge_removals", improvement.edge_removals},
+                       {"vertex_moves", improvement.vertex_moves},
+                       {"vertex_insertions", improvement.vertex_insertions},
+                       {"sweeps", improvement.sweeps},
+                       {"time_limit_reached", improvement.time_limit_reached},
+                       {"seconds", improvement.seconds}};
   j["seconds"] = {{"load", times.load},
                   {"protect", stats.seconds_protect},
                   {"initial_points", stats.seconds_initial},
                   {"refine", stats.seconds_refine},
                   {"exude", exudation.seconds},
                   {"extract", stats.seconds_extract},
+                  {"optimize", improvement.seconds},
                   {"write", times.write},
                   {"report", times.report}};
   return j;
@@ -463,7 +489,8 @@ std::vector<std::string> run_warnings(const RefinementStats& stats) {
 }
 
 std::string format_run_summary(const Options& opt, const RefinementStats& stats,
-                               const ExudationStats& exudation, const RunTimes& times,
+                               const ExudationStats& exudation,
+                               const TetImprovementStats& improvement, const RunTimes& times,
                                bool wrote_mesh) {
   std::ostringstream s;
   s.setf(std::ios::fixed);
@@ -493,6 +520,20 @@ std::string format_run_summary(const Options& opt, const RefinementStats& stats,
   } else {
     s << "exudation: off\n";
   }
+  if (opt.surface_only) {
+    s << "optimization: none (surface only)\n";
+  } else if (improvement.ran) {
+    s << "optimization: min dihedral " << improvement.min_dihedral_before_deg << " -> "
+      << improvement.min_dihedral_after_deg << " deg, tets below 10 deg "
+      << improvement.histogram_before[0] + improvement.histogram_before[1] << " -> "
+      << improvement.histogram_after[0] + improvement.histogram_after[1] << ", "
+      << improvement.edge_removals << " edge removals, " << improvement.face_flips
+      << " face flips, " << improvement.vertex_moves << " vertex moves, "
+      << improvement.vertex_insertions << " new vertices"
+      << (improvement.time_limit_reached ? " (time limit reached)" : "") << '\n';
+  } else {
+    s << "optimization: off\n";
+  }
   // Times with 3 significant digits (%g): a short phase reads 0.00312 s, not 0.00 s.
   const auto sec = [](double v) {
     char text[32];
@@ -501,8 +542,9 @@ std::string format_run_summary(const Options& opt, const RefinementStats& stats,
   };
   s << "time: load " << sec(times.load) << " s, protect " << sec(stats.seconds_protect)
     << " s, refine " << sec(stats.seconds_initial + stats.seconds_refine) << " s, exude "
-    << sec(exudation.seconds) << " s, extract " << sec(stats.seconds_extract) << " s, write "
-    << sec(times.write) << " s, report " << sec(times.report) << " s\n";
+    << sec(exudation.seconds) << " s, extract " << sec(stats.seconds_extract) << " s, optimize "
+    << sec(improvement.seconds) << " s, write " << sec(times.write) << " s, report "
+    << sec(times.report) << " s\n";
   if (wrote_mesh) {
     s << "wrote " << opt.output << (opt.report.empty() ? "" : " and " + opt.report)
       << (opt.picture.path.empty() ? "" : " and " + opt.picture.path) << '\n';

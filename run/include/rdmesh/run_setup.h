@@ -32,6 +32,7 @@ struct Options {
       radius_edge, min_size;
   double max_elements = kDefaultMaxElements;  ///< --max-elements: limit of the size estimate
   bool no_exude = false;                      ///< --no-exude
+  bool no_optimize = false;                   ///< --no-optimize: keep the restricted Delaunay tets
   double exude_time_limit = 0;                ///< --exude-time-limit SECONDS, 0 = none
   std::string report;                         ///< JSON report path, empty = none
   bool quiet = false;
@@ -92,6 +93,8 @@ Criteria resolve_criteria(const Options& opt, const LoadedInput& input);
 
 /// The optimizers' settings from the options (--no-exude, --exude-time-limit).
 ExudationOptions exudation_options(const Options& opt);
+/// The final improvement's settings from the options (--no-optimize).
+TetImprovementOptions improvement_options(const Options& opt);
 
 struct RunTimes {
   double load = 0, write = 0, report = 0;
@@ -103,7 +106,7 @@ struct RunTimes {
 /// null when the input is no file (a Python callable or oracle).
 nlohmann::json report_json(const Options& opt, const Criteria& criteria, const DomainOracle& oracle,
                            const RefinementStats& stats, const ExudationStats& exudation,
-                           const QualityReport& quality,
+                           const TetImprovementStats& improvement, const QualityReport& quality,
                            const std::optional<FidelityReport>& fidelity, const RunTimes& times,
                            const FemResults& fem = {});
 
@@ -124,7 +127,8 @@ std::vector<std::string> run_warnings(const RefinementStats& stats);
 /// `wrote_mesh`: false when the fidelity check (or the time limit) kept the mesh from being
 /// written.
 std::string format_run_summary(const Options& opt, const RefinementStats& stats,
-                               const ExudationStats& exudation, const RunTimes& times,
+                               const ExudationStats& exudation,
+                               const TetImprovementStats& improvement, const RunTimes& times,
                                bool wrote_mesh = true);
 
 }  // namespace rdmesh::run
