@@ -86,8 +86,10 @@ struct TetImprovementOptions {
   /// Passes over the tetrahedra below the bound (each pass treats those left
   /// by the previous one, with the tetrahedra the changes created).
   int max_sweeps = 6;
-  /// New vertices: at most this fraction of the tetrahedra (and 10 more).
+  /// New vertices: at most this fraction of the tetrahedra (and 10 more),
+  /// only for tetrahedra below this angle (degrees; the costliest step).
   double max_insertions = 0.01;
+  double insertion_bound_deg = 12;
   /// Stop after this many seconds; 0 = no limit (the result is then no longer
   /// independent of the machine's speed).
   double time_limit_seconds = 0;

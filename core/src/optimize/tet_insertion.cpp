@@ -21,16 +21,24 @@ Face sorted_face(const Tet& t, int i) {
 
 }  // namespace
 
-bool plan_insertion(const TetTopology& topo, int t, int new_vertex, Point3& where,
+bool plan_insertion(const TetTopology& topo, int t, int levels, int new_vertex, Point3& where,
                     LocalChange& change) {
-  const Tet& q = topo.tet(t);
   const int label = topo.label(t);
   std::vector<int> cavity{t};
-  for (int i = 0; i < 4; ++i) {
-    const int a = q[(i + 1) & 3], b = q[(i + 2) & 3], c = q[(i + 3) & 3];
-    if (topo.constrained_face(a, b, c)) continue;
-    const int u = topo.across(t, a, b, c);
-    if (u >= 0 && topo.label(u) == label) cavity.push_back(u);
+  for (std::size_t from = 0, level = 0; level < static_cast<std::size_t>(levels); ++level) {
+    const std::size_t to = cavity.size();
+    for (; from < to; ++from) {
+      const Tet q = topo.tet(cavity[from]);
+      for (int i = 0; i < 4; ++i) {
+        const int a = q[(i + 1) & 3], b = q[(i + 2) & 3], c = q[(i + 3) & 3];
+        if (topo.constrained_face(a, b, c)) continue;
+        const int u = topo.across(cavity[from], a, b, c);
+        if (u >= 0 && topo.label(u) == label &&
+            std::find(cavity.begin(), cavity.end(), u) == cavity.end()) {
+          cavity.push_back(u);
+        }
+      }
+    }
   }
   if (cavity.size() < 2) return false;
   // Faces of the cavity: (sorted face, tet, index); those seen once bound it.

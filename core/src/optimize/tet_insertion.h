@@ -2,8 +2,8 @@
 // where no flip helps and no vertex of a bad tetrahedron may move (slivers
 // and flat caps whose four vertices lie on features or patches).
 //
-// The cavity is the tetrahedron and its neighbours across its unconstrained
-// faces inside the same subdomain; it is refused when a constrained face or
+// The cavity is the tetrahedron and its neighbours across unconstrained
+// faces inside the same subdomain (one or two faces away); it is refused when a constrained face or
 // edge would be inside it or a vertex would lose its last tetrahedron. The
 // new vertex is joined to every face on the cavity's boundary; each new
 // tetrahedron must be positively oriented (CGAL's exact predicate), so the new
@@ -20,8 +20,9 @@
 namespace rdmesh::detail {
 
 /// Plans the insertion of vertex number `new_vertex` (the next one) at
-/// `where` to remove tetrahedron t; false when no candidate improves.
-bool plan_insertion(const TetTopology& topo, int t, int new_vertex, Point3& where,
+/// `where` to remove tetrahedron t, with the neighbours `levels` faces away
+/// in the cavity; false when no candidate improves.
+bool plan_insertion(const TetTopology& topo, int t, int levels, int new_vertex, Point3& where,
                     LocalChange& change);
 
 }  // namespace rdmesh::detail
