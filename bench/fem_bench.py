@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """FEM options against plain runs, and Gmsh's equivalents, in the same run.
 
-usage: python3 bench/fem_bench.py BUILD_DIR [--repeat N] [--parts N] [FILE.step ...]
+usage: python3 bench/fem_bench.py BUILD_DIR [--repeat N] [--parts N] [--curvature C]
+                                 [--no-gmsh] [FILE.step ...]
 
 For each STEP file (default: three shared parts) it times, best of --repeat
 alternating runs (this machine's single runs swing by up to 30%):
@@ -9,13 +10,16 @@ alternating runs (this machine's single runs swing by up to 30%):
 (each rdmesh run with --report, whose distance measures the three share)
   rdmesh FILE --size h --order 2          second order
   rdmesh FILE --size h --partitions N     partitions
+  rdmesh FILE --size h --curvature C      sizes by curvature (C elements per turn)
   gmsh FILE -3 -nt 1 -clmax h             Gmsh's anchor
   gmsh FILE -3 -nt 1 -clmax h -order 2    Gmsh second order
   gmsh FILE -3 -nt 1 -clmax h -part N     Gmsh partitions
+  gmsh FILE -3 -nt 1 -clmax h -clcurv C   Gmsh sizes by curvature
 with h = bounding-box diagonal / 20, and prints each option's time as a
 ratio to its own tool's anchor (the target for --order 2 is under 1.3), with
 rdmesh's own figures (straightened nodes, min scaled Jacobian, edge cut,
-balance) from its JSON report. Output files go to a temporary directory.
+balance, the sizing's own seconds and element counts with curvature) from its JSON
+report. --curvature C sets C (default 16); --no-gmsh leaves Gmsh out. Output files go to a temporary directory.
 """
 import json
 import os
@@ -55,6 +59,14 @@ def main():
         i = args.index("--repeat")
         repeat = int(args[i + 1])
         del args[i:i + 2]
+    curvature = 16
+    if "--curvature" in args:
+        i = args.index("--curvature")
+        curvature = int(args[i + 1])
+        del args[i:i + 2]
+    with_gmsh = "--no-gmsh" not in args
+    if not with_gmsh:
+        args.remove("--no-gmsh")
     if "--parts" in args:
         i = args.index("--parts")
         parts = int(args[i + 1])
@@ -77,10 +89,13 @@ def main():
                 "p1": base + ["--report", rep + ".p1"],
                 "order2": base + ["--order", "2", "--report", rep + ".o2"],
                 "part": base + ["--partitions", str(parts), "--report", rep + ".part"],
-                "gmsh": ["gmsh", path, "-3", "-nt", "1", "-clmax", repr(h), "-o", out],
+                "curv": base + ["--curvature", str(curvature), "--report", rep + ".curv"],
             }
-            runs["gmsh_order2"] = runs["gmsh"] + ["-order", "2"]
-            runs["gmsh_part"] = runs["gmsh"] + ["-part", str(parts)]
+            if with_gmsh:
+                runs["gmsh"] = ["gmsh", path, "-3", "-nt", "1", "-clmax", repr(h), "-o", out]
+                runs["gmsh_order2"] = runs["gmsh"] + ["-order", "2"]
+                runs["gmsh_part"] = runs["gmsh"] + ["-part", str(parts)]
+                runs["gmsh_curv"] = runs["gmsh"] + ["-clcurv", str(curvature)]
             best = {k: float("inf") for k in runs}
             for _ in range(repeat):
                 for k, cmd in runs.items():
@@ -89,20 +104,39 @@ def main():
                 o2 = json.load(f)
             with open(rep + ".part") as f:
                 pt = json.load(f)
-            rows.append((name, h, o2["tets"], best, o2["second_order"], pt["partitions"]))
-    print(f"h = diagonal / 20, best of {repeat}, {parts} partitions\n")
+            with open(rep + ".curv") as f:
+                cv = json.load(f)
+            with open(rep + ".p1") as f:
+                p1 = json.load(f)
+            rows.append((name, h, o2["tets"], best, o2["second_order"], pt["partitions"], cv, p1))
+    nan = float("nan")
+    g = lambda b, k: b.get(k, nan)
+    print(f"h = diagonal / 20, best of {repeat}, {parts} partitions, curvature {curvature}\n")
     print("| file | tets | rdmesh P1 | --order 2 (ratio) | --partitions (ratio) | gmsh -3 | "
           "-order 2 (ratio) | -part (ratio) | straightened / boundary nodes, min scaled J | "
           "edge cut / shared faces, largest part |")
     print("|---|---|---|---|---|---|---|---|---|---|")
-    for name, h, tets, b, o2, pt in rows:
+    for name, h, tets, b, o2, pt, cv, p1 in rows:
         print(f"| {name} | {tets} | {b['p1']:.2f} s | {b['order2']:.2f} s "
               f"({b['order2'] / b['p1']:.2f}) | {b['part']:.2f} s ({b['part'] / b['p1']:.2f}) | "
-              f"{b['gmsh']:.2f} s | {b['gmsh_order2']:.2f} s ({b['gmsh_order2'] / b['gmsh']:.2f}) | "
-              f"{b['gmsh_part']:.2f} s ({b['gmsh_part'] / b['gmsh']:.2f}) | "
+              f"{g(b, 'gmsh'):.2f} s | {g(b, 'gmsh_order2'):.2f} s "
+              f"({g(b, 'gmsh_order2') / g(b, 'gmsh'):.2f}) | "
+              f"{g(b, 'gmsh_part'):.2f} s ({g(b, 'gmsh_part') / g(b, 'gmsh'):.2f}) | "
               f"{o2['straightened']} / {o2['curve_nodes'] + o2['surface_nodes']}, "
               f"{o2['min_scaled_jacobian']:.3f} | {pt['edge_cut']} / {pt['dual_edges']}, "
               f"{pt['imbalance']:.3f} |")
+    print(f"\nSizes by curvature ({curvature} per turn): the sizing step's seconds (sampling "
+          "the curvature, in the run) over the P1 run, and the whole run's.\n")
+    print("| file | P1 tets | --curvature tets | sizing | sizing / P1 run | run (ratio to P1) | "
+          "samples, clamped | curve edges max / 2 pi R/N | facets max, mean | gmsh -clcurv (ratio to gmsh -3) |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
+    for name, h, tets, b, o2, pt, cv, p1 in rows:
+        c = cv["curvature_sizes"]
+        print(f"| {name} | {p1['tets']} | {cv['tets']} | {cv['sizing_seconds']:.2f} s | "
+              f"{cv['sizing_seconds'] / b['p1']:.3f} | {b['curv']:.2f} s ({b['curv'] / b['p1']:.2f}) | "
+              f"{c['samples']}, {c['clamped_to_min_size']} | {c['curve_max_ratio']:.2f} | "
+              f"{c['facet_max_ratio']:.2f}, {c['facet_mean_ratio']:.2f} | "
+              f"{g(b, 'gmsh_curv'):.2f} s ({g(b, 'gmsh_curv') / g(b, 'gmsh'):.2f}) |")
     return 0
 
 

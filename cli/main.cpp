@@ -37,7 +37,8 @@ int mesh_command(const rdmesh::run::Options& opt) {
   const run::LoadedInput input = run::load_input(opt);
   progress.phase("checking the criteria");
   Criteria criteria = run::resolve_criteria(opt, input);
-  const std::vector<EntitySize> sizes = run::apply_size_options(opt.fem, *input.oracle, criteria);
+  const run::AppliedSizes sizes =
+      run::apply_size_options(opt.fem, input.hints.sizes, *input.oracle, criteria);
   const double seconds_load =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 

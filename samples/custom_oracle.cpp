@@ -58,6 +58,8 @@ class BallOracle final : public DomainOracle {
     if (n == 0) return std::nullopt;
     return c_ + (r_ / n) * (p - c_);
   }
+  /// Optional, for sizes by curvature (--curvature): a sphere's is 1 / r everywhere.
+  std::optional<double> curvature(const Point3&, PatchId) const override { return 1 / r_; }
   double tolerance() const override { return 1e-12 * r_; }
   // A sphere has no sharp features.
   std::vector<CornerInfo> corners() const override { return {}; }

@@ -3,6 +3,7 @@
 // caches are built up front and only read afterwards). Arc length is composite 5-point
 // Gauss-Legendre over fixed cells with a cumulative table, so length() is
 // additive by construction and parameter_at_length() inverts it by Newton.
+#include <GeomLProp_CLProps.hxx>
 #include <Geom_BSplineCurve.hxx>
 #include <Geom_Line.hxx>
 #include <Geom_TrimmedCurve.hxx>
@@ -98,6 +99,11 @@ Point3 EdgeCurve::point(double t) const {
   if (t == t1_) return to_point(p.XYZ()) + d1_;
   const double s = (t - t0_) / (t1_ - t0_);
   return to_point(p.XYZ()) + (1 - s) * d0_ + s * d1_;
+}
+
+double EdgeCurve::curvature(double t) const {
+  GeomLProp_CLProps props(curve_, std::clamp(t, t0_, t1_), 2, 1e-12);
+  return props.IsTangentDefined() ? props.Curvature() : 0.0;
 }
 
 Point3 EdgeCurve::derivative(double t) const {

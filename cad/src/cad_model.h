@@ -73,6 +73,9 @@ class EdgeCurve final : public Curve {
   double closest(const Point3& p, double ta, double tb) const override;
   std::vector<double> plane_crossings(const Point3& normal, double offset, double ta,
                                       double tb) const override;
+  /// OpenCASCADE's curvature of the edge's 3D curve (GeomLProp_CLProps); 0
+  /// where its tangent is undefined.
+  double curvature(double t) const override;
   /// The edge's 3D curve (before the end corrections), for reference checks.
   const Handle(Geom_Curve)& geometry() const { return curve_; }
   /// Whether point() reads B-spline span caches rather than the Geom_Curve.

@@ -4,6 +4,7 @@
 // objects live in per-thread caches (thread_state.h).
 #include <BRepGProp.hxx>
 #include <GProp_GProps.hxx>
+#include <GeomLProp_SLProps.hxx>
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -252,6 +253,31 @@ std::optional<Point3> CadOracle::project(const Point3& p, PatchId patch) const {
     return cad::project_on_face(m, cad::thread_state(m, serial_), patch.value - 1, p);
   } catch (const Standard_Failure&) {
     return std::nullopt;  // "does not converge"
+  }
+}
+
+std::optional<double> CadOracle::curvature(const Point3& p, PatchId patch) const {
+  const Model& m = *model_;
+  if (patch.value < 1 || patch.value > static_cast<int>(m.faces.size())) return std::nullopt;
+  const cad::FacePatch& f = m.faces[static_cast<std::size_t>(patch.value) - 1];
+  switch (f.kind) {
+    case cad::SurfaceKind::plane:
+      return 0.0;
+    case cad::SurfaceKind::cylinder:
+      return 1 / f.cylinder.Radius();
+    case cad::SurfaceKind::sphere:
+      return 1 / f.sphere.Radius();
+    default:
+      break;
+  }
+  try {
+    const auto uv = cad::foot_parameters(m, cad::thread_state(m, serial_), patch.value - 1, p);
+    if (!uv) return std::nullopt;
+    GeomLProp_SLProps props(f.surface, (*uv)[0], (*uv)[1], 2, 1e-9);
+    if (!props.IsCurvatureDefined()) return std::nullopt;
+    return std::max(std::fabs(props.MaxCurvature()), std::fabs(props.MinCurvature()));
+  } catch (const Standard_Failure&) {
+    return std::nullopt;
   }
 }
 

@@ -127,6 +127,20 @@ std::optional<Point3> project_on_face(const CadOracle::Model& m, ThreadState& ts
   return std::nullopt;
 }
 
+std::optional<std::array<double, 2>> foot_parameters(const CadOracle::Model& m, ThreadState& ts,
+                                                     int face, const Point3& p) {
+  const FacePatch& f = m.faces[face];
+  double u = 0, v = 0;
+  if (tessellation_guess(m, f, p, u, v)) {
+    const SurfaceFoot foot = newton_foot(ts.surface(face), p, u, v, m.tolerance);
+    if (foot.converged) return std::array<double, 2>{foot.u, foot.v};
+  }
+  GeomAPI_ProjectPointOnSurf proj(to_gp(p), f.surface, f.u0, f.u1, f.v0, f.v1);
+  if (proj.NbPoints() == 0) return std::nullopt;
+  proj.LowerDistanceParameters(u, v);
+  return std::array<double, 2>{u, v};
+}
+
 double distance_to_face(const CadOracle::Model& m, ThreadState& ts, int face, const Point3& p,
                         double limit) {
   const std::optional<Point3> x = newton_closest(m, ts, face, p, limit);

@@ -8,6 +8,7 @@
 // surface; BRepExtrema is the last resort.
 #pragma once
 
+#include <array>
 #include <optional>
 
 #include "cad_model.h"
@@ -20,6 +21,13 @@ class ThreadState;
 /// Throws Standard_Failure.
 std::optional<Point3> project_on_face(const CadOracle::Model& m, ThreadState& ts, int face,
                                       const Point3& p);
+
+/// The (u, v) of the foot of p on face `face`'s surface (the trimmed face
+/// plays no part): Newton from the nearest point of its tessellation, else
+/// GeomAPI_ProjectPointOnSurf over the face's (u, v) box; nullopt when
+/// neither converges. Throws Standard_Failure.
+std::optional<std::array<double, 2>> foot_parameters(const CadOracle::Model& m, ThreadState& ts,
+                                                     int face, const Point3& p);
 
 /// min(limit, distance from p to face `face`), by Newton from the tessellation
 /// only: the surface's foot when it is inside the face, else the boundary

@@ -4,77 +4,23 @@
 #include "rdmesh/entity_sizes.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <map>
 #include <memory>
 #include <optional>
 #include <set>
 
-#include "rdmesh/detail/triangle_bvh.h"
+#include "graded_field.h"
+#include "rdmesh/curvature_sizes.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/mesher.h"
 
 namespace rdmesh {
 namespace {
 
-/// A piecewise-linear stand-in of an entity: triangles over a patch, segments
-/// (third index -1) along a curve, with their vertices on the entity, in a
-/// bounding-volume hierarchy for distance queries.
-struct Pieces {
-  std::vector<Point3> points;
-  std::vector<std::array<int, 3>> items;
-};
-
-Point3 closest_on_segment(const Point3& x, const Point3& a, const Point3& b) {
-  const Point3 d = b - a;
-  const double len2 = squared_norm(d);
-  const double t = len2 > 0 ? std::clamp(dot(x - a, d) / len2, 0.0, 1.0) : 0.0;
-  return a + t * d;
-}
-
-/// One entity's graded size: h + slope x distance to its pieces.
-class GradedSize {
- public:
-  GradedSize(Pieces pieces, double size, double slope)
-      : pieces_(std::move(pieces)), bvh_(boxes(pieces_)), size_(size), slope_(slope) {}
-  /// min(bound, h + slope x distance): the search stops where the entity can
-  /// no longer lower `bound`.
-  double below(const Point3& p, double bound) const {
-    if (bound <= size_) return bound;
-    const double reach = (bound - size_) / slope_;
-    double best = reach * reach;
-    bvh_.nearest([&](const Box3& b) { return squared_distance(b, p); },
-                 [&](int i, double& best_so_far) {
-                   const auto& it = pieces_.items[i];
-                   const Point3& a = pieces_.points[it[0]];
-                   const Point3& b = pieces_.points[it[1]];
-                   const Point3 q = it[2] < 0 ? closest_on_segment(p, a, b)
-                                              : closest_on_triangle(p, a, b, pieces_.points[it[2]]);
-                   best_so_far = std::min(best_so_far, squared_norm(q - p));
-                 },
-                 best);
-    return std::min(bound, size_ + slope_ * std::sqrt(best));
-  }
-
- private:
-  static std::vector<Box3> boxes(const Pieces& pieces) {
-    std::vector<Box3> out;
-    out.reserve(pieces.items.size());
-    for (const auto& it : pieces.items) {
-      Box3 b{pieces.points[it[0]], pieces.points[it[0]]};
-      for (int k = 1; k < 3 && it[k] >= 0; ++k) {
-        const Point3& q = pieces.points[it[k]];
-        b.lo = {std::min(b.lo.x, q.x), std::min(b.lo.y, q.y), std::min(b.lo.z, q.z)};
-        b.hi = {std::max(b.hi.x, q.x), std::max(b.hi.y, q.y), std::max(b.hi.z, q.z)};
-      }
-      out.push_back(b);
-    }
-    return out;
-  }
-  Pieces pieces_;
-  TriangleBvh bvh_;
-  double size_, slope_;
-};
+using detail::GradedField;
+using detail::Pieces;
 
 std::string strip_quotes(std::string s) {
   if (s.size() >= 2 && s.front() == '"' && s.back() == '"') s = s.substr(1, s.size() - 2);
@@ -147,46 +93,21 @@ Pieces patch_pieces(const DomainOracle& oracle, const TetMesh& surface, int patc
   return out;
 }
 
-ScalarField lowered(const ScalarField& base,
-                    std::shared_ptr<const std::vector<std::unique_ptr<GradedSize>>> near,
-                    std::shared_ptr<const std::vector<std::pair<int, double>>> inside,
-                    const DomainOracle* oracle) {
-  return ScalarField{0.0, [base, near, inside, oracle](const Point3& p) {
-                       double h = base(p);
-                       for (const auto& g : *near) h = g->below(p, h);
-                       if (inside && !inside->empty()) {
-                         const int label = oracle->locate(p).value;
-                         for (const auto& [id, size] : *inside) {
-                           if (id == label) h = std::min(h, size);
-                         }
-                       }
-                       return h;
-                     }};
-}
-
 }  // namespace
 
-EntitySize parse_entity_size(const std::string& text, const DomainOracle& oracle) {
-  const auto colon = text.find(':'), equals = text.rfind('=');
-  if (colon == std::string::npos || equals == std::string::npos || equals < colon) {
-    throw InputError("--size-on " + text +
-                     ": expected KIND:WHICH=SIZE, e.g. face:12=0.5 (KIND face, curve or solid)");
+EntitySize entity_size(const std::string& key, double size, const DomainOracle& oracle) {
+  const auto colon = key.find(':');
+  if (colon == std::string::npos) {
+    throw InputError(key + ": expected KIND:WHICH, e.g. face:12 (KIND face, curve or solid)");
   }
-  const std::string kind = text.substr(0, colon);
-  const std::string which = strip_quotes(text.substr(colon + 1, equals - colon - 1));
+  if (!(size > 0) || !std::isfinite(size)) {
+    throw InputError(key + ": the size must be a positive number");
+  }
+  const std::string kind = key.substr(0, colon);
+  const std::string which = strip_quotes(key.substr(colon + 1));
   EntitySize e;
-  e.label = text.substr(0, equals);
-  try {
-    std::size_t used = 0;
-    const std::string number = text.substr(equals + 1);
-    e.size = std::stod(number, &used);
-    if (used != number.size()) e.size = -1;
-  } catch (const std::exception&) {
-    e.size = -1;
-  }
-  if (!(e.size > 0) || !std::isfinite(e.size)) {
-    throw InputError("--size-on " + text + ": the size must be a positive number");
-  }
+  e.label = key;
+  e.size = size;
   if (kind == "face" || kind == "patch") {
     e.kind = EntitySize::Kind::kPatch;
     e.id = find_entity(oracle.patches(), which);
@@ -197,18 +118,62 @@ EntitySize parse_entity_size(const std::string& text, const DomainOracle& oracle
     e.kind = EntitySize::Kind::kSubdomain;
     e.id = find_entity(oracle.subdomains(), which);
   } else {
-    throw InputError("--size-on " + text + ": unknown kind '" + kind +
-                     "' (expected face, curve or solid)");
+    throw InputError(key + ": unknown kind '" + kind + "' (expected face, curve or solid)");
   }
-  if (e.id == 0) {
-    throw InputError("--size-on " + text + ": the domain has no " + kind + " '" + which + "'");
-  }
+  if (e.id == 0) throw InputError(key + ": the domain has no " + kind + " '" + which + "'");
   return e;
 }
 
-void apply_entity_sizes(const DomainOracle& oracle, const std::vector<EntitySize>& sizes,
-                        double grade, Criteria& criteria) {
-  if (sizes.empty()) return;
+EntitySize parse_entity_size(const std::string& text, const DomainOracle& oracle) {
+  const auto colon = text.find(':'), equals = text.rfind('=');
+  if (colon == std::string::npos || equals == std::string::npos || equals < colon) {
+    throw InputError("--size-on " + text +
+                     ": expected KIND:WHICH=SIZE, e.g. face:12=0.5 (KIND face, curve or solid)");
+  }
+  double size = -1;
+  try {
+    std::size_t used = 0;
+    const std::string number = text.substr(equals + 1);
+    size = std::stod(number, &used);
+    if (used != number.size()) size = -1;
+  } catch (const std::exception&) {
+    size = -1;
+  }
+  if (!(size > 0) || !std::isfinite(size)) {
+    throw InputError("--size-on " + text + ": the size must be a positive number");
+  }
+  try {
+    return entity_size(text.substr(0, equals), size, oracle);
+  } catch (const InputError& e) {
+    throw InputError("--size-on " + std::string(e.what()));
+  }
+}
+
+SizeRequests resolve_size_spec(const SizeSpec& spec, const DomainOracle& oracle) {
+  SizeRequests r;
+  for (const auto& [key, size] : spec.entities)
+    r.entities.push_back(entity_size(key, size, oracle));
+  if (spec.grade) r.grade = *spec.grade;
+  if (spec.curvature) r.curvature = *spec.curvature;
+  return r;
+}
+
+void merge_size_spec(SizeSpec& into, const SizeSpec& from) {
+  into.entities.insert(into.entities.end(), from.entities.begin(), from.entities.end());
+  if (from.grade) into.grade = from.grade;
+  if (from.curvature) into.curvature = from.curvature;
+}
+
+SizesApplied apply_sizes(const DomainOracle& oracle, const SizeRequests& requests,
+                         Criteria& criteria) {
+  SizesApplied out;
+  const std::vector<EntitySize>& sizes = requests.entities;
+  if (requests.curvature != 0 && !(requests.curvature > 0 && std::isfinite(requests.curvature))) {
+    throw InputError("--curvature must be a positive number of elements per turn");
+  }
+  if (sizes.empty() && requests.curvature == 0) return out;
+  const auto start = std::chrono::steady_clock::now();
+  const double grade = requests.grade;
   if (!(grade > 1) || !std::isfinite(grade)) {
     throw InputError("--grade must be a number above 1");
   }
@@ -219,7 +184,6 @@ void apply_entity_sizes(const DomainOracle& oracle, const std::vector<EntitySize
                        std::to_string(min_size) + ")");
     }
   }
-  const double slope = grade - 1;
   // Patches (and the patches around a subdomain) are sampled on a first,
   // surface-only mesh at the base sizes.
   std::map<int, double> patch_size;  // patch id -> smallest size asked on or around it
@@ -236,29 +200,39 @@ void apply_entity_sizes(const DomainOracle& oracle, const std::vector<EntitySize
     }
   }
   TetMesh surface;
-  if (!patch_size.empty()) {
-    MeshOptions first;
-    first.surface_only = true;
-    first.exudation.enabled = false;
-    surface = generate_mesh(oracle, criteria, first).mesh;
+  if (!patch_size.empty() || requests.curvature > 0) {
+    surface = detail::sampling_surface(oracle, criteria);
   }
-  auto near = std::make_shared<std::vector<std::unique_ptr<GradedSize>>>();
+  auto near = std::make_shared<GradedField>(grade - 1);
   for (const auto& [patch, size] : patch_size) {
-    near->push_back(
-        std::make_unique<GradedSize>(patch_pieces(oracle, surface, patch, size), size, slope));
+    near->add(patch_pieces(oracle, surface, patch, size), size);
   }
   auto inside = std::make_shared<std::vector<std::pair<int, double>>>();
   for (const EntitySize& e : sizes) {
     if (e.kind == EntitySize::Kind::kCurve) {
-      near->push_back(
-          std::make_unique<GradedSize>(curve_pieces(oracle, e.id, 0.5 * e.size), e.size, slope));
+      near->add(curve_pieces(oracle, e.id, 0.5 * e.size), e.size);
     } else if (e.kind == EntitySize::Kind::kSubdomain) {
       inside->emplace_back(e.id, e.size);
     }
   }
-  criteria.edge_size = lowered(criteria.edge_size, near, nullptr, &oracle);
-  criteria.facet_size = lowered(criteria.facet_size, near, nullptr, &oracle);
-  criteria.cell_size = lowered(criteria.cell_size, near, inside, &oracle);
+  if (requests.curvature > 0) {
+    out.curvature =
+        detail::add_curvature_pieces(oracle, surface, criteria, requests.curvature, *near);
+  }
+  criteria.edge_size = detail::lowered(criteria.edge_size, near, nullptr, &oracle);
+  criteria.facet_size = detail::lowered(criteria.facet_size, near, nullptr, &oracle);
+  criteria.cell_size = detail::lowered(criteria.cell_size, near, inside, &oracle);
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+void apply_entity_sizes(const DomainOracle& oracle, const std::vector<EntitySize>& sizes,
+                        double grade, Criteria& criteria) {
+  SizeRequests r;
+  r.entities = sizes;
+  r.grade = grade;
+  if (sizes.empty()) return;
+  (void)apply_sizes(oracle, r, criteria);
 }
 
 std::vector<AchievedSize> achieved_sizes(const TetMesh& mesh,

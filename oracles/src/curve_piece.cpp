@@ -64,4 +64,9 @@ std::vector<double> CurvePiece::plane_crossings(const Point3& normal, double off
   return out;
 }
 
+double CurvePiece::curvature(double t) const {
+  t = clamp(t);
+  return base_->curvature(t > base_end_ ? t - period_ : t);
+}
+
 }  // namespace rdmesh::detail

@@ -30,6 +30,7 @@ class CurvePiece final : public Curve {
   double closest(const Point3& p, double ta, double tb) const override;
   std::vector<double> plane_crossings(const Point3& normal, double offset, double ta,
                                       double tb) const override;
+  double curvature(double t) const override;
 
  private:
   double clamp(double t) const { return t < begin_ ? begin_ : (t > end_ ? end_ : t); }

@@ -16,6 +16,7 @@
 #include "rdmesh/input_file.h"
 #include "rdmesh/parametric_curve.h"
 #include "rdmesh/polyline_curve.h"
+#include "size_spec_json.h"
 
 namespace rdmesh {
 
@@ -23,9 +24,9 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-constexpr const char* kTopKeys[] = {"description",    "bbox",        "functions",  "subdomains",
-                                    "curves",         "size",        "edge_size",  "facet_size", "cell_size",
-                                    "facet_distance", "facet_angle", "radius_edge"};
+constexpr const char* kTopKeys[] = {
+    "description", "bbox",      "functions",      "subdomains",  "curves",      "size", "edge_size",
+    "facet_size",  "cell_size", "facet_distance", "facet_angle", "radius_edge", "sizes"};
 constexpr const char* kSubdomainKeys[] = {"name", "inside", "outside"};
 constexpr const char* kCurveKeys[] = {"name", "x", "y", "z", "t", "points"};
 constexpr const char* kExternalCurveKeys[] = {"name", "external"};
@@ -420,6 +421,9 @@ class Parser {
     h.facet_distance = positive_number(doc, "facet_distance", INFINITY);
     h.facet_angle = positive_number(doc, "facet_angle", 60.0);
     h.radius_edge = positive_number(doc, "radius_edge", INFINITY);
+    if (doc.contains("sizes")) {
+      checked([&] { h.sizes = detail::size_spec_from_json(doc["sizes"]); }, "'sizes': ");
+    }
     return h;
   }
 

@@ -151,6 +151,26 @@ Point3 ParametricCurve::derivative(double t) const {
   return (1 / (12 * h)) * d;
 }
 
+double ParametricCurve::curvature(double t) const {
+  t = clamp(t);
+  const std::size_t i = interval_of(t);
+  const double h = 0.01 * (params_[i + 1] - params_[i]);
+  Point3 second;
+  if (t - 2 * h < t0_ || t + 2 * h > t1_) {
+    const double s = t - 2 * h < t0_ ? h : -h;  // one-sided, towards the inside
+    second = (1 / (s * s)) * (2.0 * gamma_(t) + -5.0 * gamma_(t + s) + 4.0 * gamma_(t + 2 * s) +
+                              -1.0 * gamma_(t + 3 * s));
+  } else {
+    second =
+        (1 / (12 * h * h)) * (-1.0 * gamma_(t - 2 * h) + 16.0 * gamma_(t - h) + -30.0 * gamma_(t) +
+                              16.0 * gamma_(t + h) + -1.0 * gamma_(t + 2 * h));
+  }
+  const Point3 first = derivative(t);
+  const double speed = norm(first);
+  if (!(speed > 0)) return 0;
+  return norm(cross(first, second)) / (speed * speed * speed);
+}
+
 double ParametricCurve::integrate(double a, double b, double whole, int depth) const {
   auto gauss = [this](double lo, double hi) {
     const double c = 0.5 * (lo + hi), r = 0.5 * (hi - lo);

@@ -26,6 +26,30 @@ PolylineCurve::PolylineCurve(std::vector<Point3> points) {
   for (std::size_t i = 1; i < points_.size(); ++i) {
     cumulative_.push_back(cumulative_.back() + distance(points_[i - 1], points_[i]));
   }
+  // Menger curvature 4 area / (product of the sides) of each vertex and its neighbours.
+  const std::size_t n = points_.size();
+  vertex_curvature_.assign(n, 0.0);
+  auto menger = [](const Point3& a, const Point3& b, const Point3& c) {
+    const double sides = distance(a, b) * distance(b, c) * distance(c, a);
+    return sides > 0 ? 2 * norm(cross(b - a, c - a)) / sides : 0.0;
+  };
+  for (std::size_t i = 1; i + 1 < n; ++i) {
+    vertex_curvature_[i] = menger(points_[i - 1], points_[i], points_[i + 1]);
+  }
+  if (closed_) {
+    vertex_curvature_[0] = vertex_curvature_[n - 1] =
+        menger(points_[n - 2], points_[0], points_[1]);
+  } else if (n > 2) {
+    vertex_curvature_[0] = vertex_curvature_[1];
+    vertex_curvature_[n - 1] = vertex_curvature_[n - 2];
+  }
+}
+
+double PolylineCurve::curvature(double t) const {
+  t = clamp(t);
+  const std::size_t i = segment_of(t);
+  const double f = (t - cumulative_[i]) / (cumulative_[i + 1] - cumulative_[i]);
+  return (1 - f) * vertex_curvature_[i] + f * vertex_curvature_[i + 1];
 }
 
 double PolylineCurve::clamp(double t) const { return std::clamp(t, 0.0, cumulative_.back()); }

@@ -49,6 +49,7 @@ TriangleMeshOracle::TriangleMeshOracle(TriangleSoup soup, const std::string& fil
   const EdgeFlags sharp = sharp_edges(topo.neighbors);
   build_patches(topo.neighbors, sharp);
   build_features(topo.neighbors, sharp);
+  build_curvature();
 }
 
 TriangleMeshOracle::~TriangleMeshOracle() = default;

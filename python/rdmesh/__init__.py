@@ -16,7 +16,8 @@ feature_angle, exude (default True; False is --no-exude), exude_time_limit,
 optimize (default True; False is --no-optimize),
 time_limit, keep_bad_mesh, check ("cheap" or "full"), order (1, or 2: 10-node
 tetrahedra), partitions (METIS), size_on ("face:12=0.5", or a list of them),
-sizes (a .json file), grade; and what the run writes, as the CLI: output (a
+sizes (a .json file), grade, curvature (elements per turn); and what the run writes,
+as the CLI: output (a
 .msh/.mesh/.vtu file; none by default, Mesh.write writes later), binary, ascii,
 format ("msh41" or "msh22"), report (a .json file; Mesh.report has it anyway),
 picture (a .png), view, picture_size, cut. They are parsed by the CLI's own

@@ -110,7 +110,8 @@ PyMesh mesh_input(const run::Options& opt, const run::LoadedInput& input,
   if (release_gil) release.emplace();
   run::announce(options, "checking the criteria");
   Criteria criteria = run::resolve_criteria(opt, input);
-  const std::vector<EntitySize> sizes = run::apply_size_options(opt.fem, *input.oracle, criteria);
+  const run::AppliedSizes sizes =
+      run::apply_size_options(opt.fem, input.hints.sizes, *input.oracle, criteria);
   run::MeshRun run = run::mesh_loaded(opt, input, criteria, options);
   run.times.load = seconds_load;
   const bool bad = run.failed();

@@ -34,6 +34,7 @@ const std::map<std::string, std::string>& accepted_values() {
       {"--size-on", "KIND:WHICH=SIZE, such as face:12=0.5"},
       {"--sizes", "a .json file of entity sizes"},
       {"--grade", "a growth factor > 1, such as 1.4"},
+      {"--curvature", "a number of elements per full turn > 0, such as 16"},
       {"--picture", "a file name ending in .png"},
       {"--view", "iso, x, y or z"},
       {"--picture-size", "WIDTHxHEIGHT, such as 1600x900"},

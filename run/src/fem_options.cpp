@@ -1,6 +1,5 @@
 #include "rdmesh/fem_options.h"
 
-#include <charconv>
 #include <fstream>
 #include <sstream>
 
@@ -25,43 +24,28 @@ void add_fem_options(CLI::App& app, FemOptions& opt) {
   app.add_option(
       "--sizes", opt.sizes_file,
       "JSON file of entity sizes: {\"face:12\": 0.5, \"curve:rim\": 0.1, \"grade\": 1.3}");
+  app.add_option("--curvature", opt.curvature,
+                 "At least N elements per full turn on curved faces and curves (Gmsh's -clcurv): "
+                 "size pi R / N where the radius of curvature is R, graded by --grade")
+      ->check(CLI::PositiveNumber);
   app.add_option("--grade", opt.grade,
                  "Entity sizes grow by at most this factor from one element to the next (> 1; "
                  "default 1.4)");
 }
 
-std::vector<EntitySize> apply_size_options(const FemOptions& opt, const DomainOracle& oracle,
-                                           Criteria& criteria) {
-  std::vector<std::string> specs = opt.size_on;
-  double grade = 1.4;
-  if (!opt.sizes_file.empty()) {
-    std::ifstream in(opt.sizes_file);
-    if (!in) throw InputError(opt.sizes_file, "cannot read the sizes file");
-    nlohmann::json j;
-    try {
-      j = nlohmann::json::parse(in);
-    } catch (const nlohmann::json::exception& e) {
-      throw InputError(opt.sizes_file, std::string("not JSON: ") + e.what());
-    }
-    if (!j.is_object()) throw InputError(opt.sizes_file, "expected an object of sizes");
-    for (const auto& [key, value] : j.items()) {
-      if (!value.is_number()) {
-        throw InputError(opt.sizes_file, "'" + key + "' must be a number");
-      }
-      if (key == "grade") {
-        grade = value.get<double>();
-      } else {
-        char text[32];
-        const auto end = std::to_chars(text, text + sizeof text, value.get<double>()).ptr;
-        specs.push_back(key + "=" + std::string(text, end));
-      }
-    }
-  }
-  if (opt.grade) grade = *opt.grade;
-  std::vector<EntitySize> sizes;
-  for (const std::string& s : specs) sizes.push_back(parse_entity_size(s, oracle));
-  apply_entity_sizes(oracle, sizes, grade, criteria);
-  return sizes;
+AppliedSizes apply_size_options(const FemOptions& opt, const std::optional<SizeSpec>& from_domain,
+                                const DomainOracle& oracle, Criteria& criteria) {
+  SizeSpec spec = from_domain.value_or(SizeSpec{});
+  if (!opt.sizes_file.empty()) merge_size_spec(spec, read_size_spec(opt.sizes_file));
+  AppliedSizes out;
+  std::vector<EntitySize> entities;  // --size-on first, then the files'
+  for (const std::string& s : opt.size_on) entities.push_back(parse_entity_size(s, oracle));
+  out.requests = resolve_size_spec(spec, oracle);
+  out.requests.entities.insert(out.requests.entities.begin(), entities.begin(), entities.end());
+  if (opt.grade) out.requests.grade = *opt.grade;
+  if (opt.curvature) out.requests.curvature = *opt.curvature;
+  out.applied = apply_sizes(oracle, out.requests, criteria);
+  return out;
 }
 
 void check_fem_options(const FemOptions& opt, const std::string& input, const std::string& output,
@@ -76,11 +60,16 @@ void check_fem_options(const FemOptions& opt, const std::string& input, const st
   }
 }
 
-FemResults apply_fem_options(const FemOptions& opt, const std::vector<EntitySize>& sizes,
-                             TetMesh& mesh, const DomainOracle& oracle) {
+FemResults apply_fem_options(const FemOptions& opt, const AppliedSizes& sizes, TetMesh& mesh,
+                             const DomainOracle& oracle, double min_size) {
   FemResults r;
-  r.sizes = achieved_sizes(mesh, sizes);
-  r.grade = opt.grade.value_or(1.4);
+  r.sizes = achieved_sizes(mesh, sizes.requests.entities);
+  r.grade = sizes.requests.grade;
+  r.sizing_seconds = sizes.applied.seconds;
+  if (sizes.requests.curvature > 0) {
+    r.curvature = sizes.applied.curvature;
+    r.curvature_achieved = achieved_curvature(mesh, oracle, sizes.requests.curvature, min_size);
+  }
   if (opt.order == 2) r.second_order = make_second_order(mesh, oracle);
   if (opt.partitions > 0) r.partitions = partition_mesh(mesh, opt.partitions);
   return r;
@@ -101,6 +90,25 @@ nlohmann::json fem_json(const FemResults& results) {
     }
     j["entity_sizes"] = list;
   }
+  j["curvature_sizes"] = nullptr;
+  if (const auto& c = results.curvature) {
+    const CurvatureAchieved& a = *results.curvature_achieved;
+    j["curvature_sizes"] = {{"per_turn", c->per_turn},
+                            {"samples", c->samples},
+                            {"unknown", c->unknown},
+                            {"clamped_to_min_size", c->clamped},
+                            {"pieces", c->pieces},
+                            {"min_radius", c->min_radius},
+                            {"min_size", c->min_size},
+                            {"curve_edges", a.curve_edges},
+                            {"curve_edges_over", a.curve_over},
+                            {"curve_max_ratio", a.curve_max_ratio},
+                            {"facets", a.facets},
+                            {"facets_over", a.facets_over},
+                            {"facet_max_ratio", a.facet_max_ratio},
+                            {"facet_mean_ratio", a.facet_mean_ratio}};
+  }
+  if (!results.sizes.empty() || results.curvature) j["sizing_seconds"] = results.sizing_seconds;
   if (const auto& s = results.second_order) {
     j["second_order"] = {{"mid_nodes", s->mid_nodes},
                          {"curve_nodes", s->curve_nodes},
@@ -131,6 +139,14 @@ std::string format_fem_summary(const FemResults& results) {
   for (const AchievedSize& a : results.sizes) {
     s << "size on " << a.asked.label << ": asked " << a.asked.size << ", edges mean " << a.mean_edge
       << ", max " << a.max_edge << " (" << a.edges << " edges)\n";
+  }
+  if (const auto& c = results.curvature) {
+    const CurvatureAchieved& a = *results.curvature_achieved;
+    s << "curvature sizes: " << c->per_turn << " per turn, " << c->samples << " samples ("
+      << c->clamped << " clamped to the minimum size, " << c->unknown
+      << " unknown), radius >= " << c->min_radius << "; longest edge / (2 pi R / N): curves "
+      << a.curve_max_ratio << ", facets " << a.facet_max_ratio << " (mean " << a.facet_mean_ratio
+      << "); " << results.sizing_seconds << " s\n";
   }
   if (const auto& r = results.second_order) {
     s << "second order: " << r->mid_nodes << " mid-edge nodes (" << r->curve_nodes << " on curves, "

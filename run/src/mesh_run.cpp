@@ -53,11 +53,11 @@ nlohmann::json run_report(const Options& opt, const DomainOracle& oracle, const 
                      run.fidelity, run.times, run.fem);
 }
 
-void apply_fem(const Options& opt, const std::vector<EntitySize>& sizes, const DomainOracle& oracle,
+void apply_fem(const Options& opt, const AppliedSizes& sizes, const DomainOracle& oracle,
                const MeshOptions& options, MeshRun& run) {
   if (opt.fem.order == 2) announce(options, "making second-order elements");
   if (opt.fem.order != 2 && opt.fem.partitions > 0) announce(options, "partitioning");
-  run.fem = apply_fem_options(opt.fem, sizes, run.result.mesh, oracle);
+  run.fem = apply_fem_options(opt.fem, sizes, run.result.mesh, oracle, run.criteria.min_size);
 }
 
 void write_outputs(const Options& opt, const DomainOracle& oracle, const MeshOptions& options,

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "cli_runner.h"
+#include "shared_data.h"
 
 namespace rdmesh::test {
 namespace {
@@ -141,6 +142,71 @@ TEST(CliFem, BadEntitySizesAreInputErrors) {
     EXPECT_EQ(run.exit_code, 2) << args << ": " << run.output;
     EXPECT_EQ(run.output.rfind("rdmesh: error: ", 0), 0u) << run.output;
     EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << run.output;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("out.msh"))) << args;
+  }
+}
+
+TEST(CliFem, DomainFileSizesWithCurvature) {
+  ScratchDir dir;
+  // Torus R = 1, r = 0.3: largest principal curvature 1 / 0.3 everywhere.
+  dir.write("torus.json", R"({
+    "bbox": [-1.5, -1.5, -0.5, 1.5, 1.5, 0.5],
+    "functions": {"torus": "(sqrt(x^2 + y^2) - 1)^2 + z^2 - 0.09"},
+    "size": 0.3,
+    "sizes": {"patch:1": 0.25, "curvature": 12, "grade": 1.3}
+  })");
+  const CliRun run = run_cli("torus.json -o t.msh --report r.json", dir.path());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const nlohmann::json r = nlohmann::json::parse(read_file(dir.file("r.json")));
+  const auto& c = r.at("curvature_sizes");
+  EXPECT_EQ(c.at("per_turn").get<double>(), 12);
+  EXPECT_NEAR(c.at("min_radius").get<double>(), 0.3, 0.015);
+  EXPECT_EQ(c.at("clamped_to_min_size").get<int>(), 0);
+  EXPECT_EQ(c.at("unknown").get<int>(), 0);
+  EXPECT_GT(c.at("facets").get<int>(), 100);
+  EXPECT_LE(c.at("facet_max_ratio").get<double>(), 1.05);  // no curves: no protecting balls
+  EXPECT_EQ(r.at("entity_sizes").at(0).at("entity"), "patch:1");
+  // The minor circle (radius 0.3) has at least 12 edges per turn: the
+  // boundary has about 2 pi R / (2 pi r / 12) x 12 triangles or more.
+  EXPECT_GT(r.at("triangles").get<int>(), 2 * 12 * 12 * 1 / 0.3);
+  // The command line overrides the file's curvature.
+  const CliRun six = run_cli("torus.json -o t6.msh --report r6.json --curvature 6", dir.path());
+  ASSERT_EQ(six.exit_code, 0) << six.output;
+  const nlohmann::json r6 = nlohmann::json::parse(read_file(dir.file("r6.json")));
+  EXPECT_EQ(r6.at("curvature_sizes").at("per_turn").get<double>(), 6);
+  EXPECT_LT(r6.at("triangles").get<int>(), r.at("triangles").get<int>());
+}
+
+TEST(CliFem, TriangleMeshCurvature) {
+  const std::string mesh = test::shared_data("mesh/cgal_pinion.off");
+  if (mesh.empty()) RDMESH_MISSING_SHARED_DATA("mesh/cgal_pinion.off");
+  ScratchDir dir;
+  const CliRun base = run_cli("'" + mesh + "' -q -o a.msh --report a.json", dir.path());
+  ASSERT_EQ(base.exit_code, 0) << base.output;
+  const CliRun run =
+      run_cli("'" + mesh + "' -q -o b.msh --report b.json --curvature 3", dir.path());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const nlohmann::json a = nlohmann::json::parse(read_file(dir.file("a.json")));
+  const nlohmann::json b = nlohmann::json::parse(read_file(dir.file("b.json")));
+  const auto& c = b.at("curvature_sizes");
+  EXPECT_GT(c.at("samples").get<int>(), 0);
+  EXPECT_EQ(c.at("unknown").get<int>(), 0);
+  EXPECT_GT(c.at("min_radius").get<double>(), 0);
+  EXPECT_GT(b.at("triangles").get<int>(), a.at("triangles").get<int>());
+  EXPECT_LT(c.at("facet_mean_ratio").get<double>(), 1.0);
+}
+
+TEST(CliFem, BadCurvatureIsAnInputError) {
+  ScratchDir dir;
+  const std::string sample = "'" + source_path("samples/capped_cylinder.json") + "'";
+  dir.write("zero.json", R"({"curvature": 0})");
+  dir.write("d.json", R"({"bbox": [-1, -1, -1, 1, 1, 1], "functions": {"s": "x^2+y^2+z^2-0.25"},
+                          "sizes": {"bogus": 1}})");
+  for (const std::string args : {sample + " --curvature 0", sample + " --curvature x",
+                                 sample + " --sizes zero.json", std::string("d.json")}) {
+    const CliRun run = run_cli(args + " -o out.msh", dir.path());
+    EXPECT_EQ(run.exit_code, 2) << args << ": " << run.output;
+    EXPECT_EQ(run.output.rfind("rdmesh: error: ", 0), 0u) << run.output;
     EXPECT_FALSE(std::filesystem::exists(dir.file("out.msh"))) << args;
   }
 }

@@ -66,6 +66,11 @@ class CappedCylinderOracle final : public DomainOracle {
     const double s = rho > r_ ? r_ / rho : 1.0;
     return Point3{s * p.x, s * p.y, patch.value == 2 ? h_ : -h_};
   }
+  /// 1 / r on the side, 0 on the caps.
+  std::optional<double> curvature(const Point3&, PatchId patch) const override {
+    if (patch.value < 1 || patch.value > 3) return std::nullopt;
+    return patch.value == 1 ? 1 / r_ : 0.0;
+  }
   double tolerance() const override { return 1e-12; }
   std::vector<CornerInfo> corners() const override { return {}; }
   std::vector<CurveInfo> curves() const override {

@@ -54,6 +54,11 @@ class BentSegment : public Curve {
   std::vector<double> plane_crossings(const Point3&, double, double, double) const override {
     return {};
   }
+  /// The parabola's: |gamma' x gamma''| / |gamma'|^3 with gamma'' = -8 bulge n.
+  double curvature(double t) const override {
+    const Point3 d1 = (b_ - a_) + (bulge_ * 4 * (1 - 2 * t)) * normal_;
+    return 8 * std::abs(bulge_) * distance(a_, b_) / std::pow(norm(d1), 3);
+  }
   mutable std::atomic<int> calls{0};
   mutable double last_range[2] = {-1, -1};
 

@@ -114,6 +114,12 @@ class CadOracle final : public DomainOracle {
   /// project() onto each other face whose tessellation boxes come within `limit`.
   double distance_to_other_patches(const Point3& p, const std::vector<PatchId>& patches,
                                    double limit) const override;
+  /// OpenCASCADE's principal curvatures (GeomLProp_SLProps) at the foot of p
+  /// on the face's surface (Newton from the face's tessellation); in closed
+  /// form on planes (0), cylinders and spheres (1 / radius), without a
+  /// projection. nullopt where the curvature is undefined (a pole) or the
+  /// projection fails.
+  std::optional<double> curvature(const Point3& p, PatchId patch) const override;
   /// max(1e-9 x box diagonal, largest face/edge tolerance), at most 1e-5 x diagonal.
   double tolerance() const override;
   std::vector<CornerInfo> corners() const override;

@@ -53,6 +53,10 @@ class Curve {
   /// ascending. Crossings closer than the tolerance may be reported once.
   virtual std::vector<double> plane_crossings(const Point3& normal, double offset, double ta,
                                               double tb) const = 0;
+
+  /// The curvature at parameter t (1 / the radius of the osculating circle;
+  /// 0 along a straight piece), for sizes that follow it (--curvature).
+  virtual double curvature(double t) const = 0;
 };
 
 }  // namespace rdmesh

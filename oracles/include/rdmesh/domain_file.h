@@ -25,6 +25,10 @@
 //       that must be positive and finite at the box center;
 //   "facet_distance", "radius_edge": positive finite numbers;
 //   "facet_angle": degrees, in (0, 60) here; criteria above 30 are refused (Criteria::validate).
+//   "sizes": an object of sizes per entity, "grade" and "curvature", as a sizing
+//       file writes them (rdmesh/size_spec.h), e.g. {"patch:1": 0.05,
+//       "curve:rim": 0.02, "subdomain:2": 0.1, "grade": 1.3, "curvature": 12};
+//       entities are resolved when the sizes are applied (rdmesh/entity_sizes.h).
 //
 // Limits (oracles/src/domain_file_limits.h): nesting at most 64 deep (checked on the
 // raw text), expressions at most 10000 characters, at most 64 subdomains, 1000 curves,
@@ -44,6 +48,7 @@
 #include "rdmesh/geometry.h"
 #include "rdmesh/implicit_oracle.h"
 #include "rdmesh/oracle.h"
+#include "rdmesh/size_spec.h"
 
 namespace rdmesh {
 
@@ -51,6 +56,7 @@ namespace rdmesh {
 struct CriteriaHints {
   std::optional<ScalarField> size, edge_size, facet_size, cell_size;  ///< constant or expression of x,y,z
   std::optional<double> facet_distance, facet_angle, radius_edge;
+  std::optional<SizeSpec> sizes;  ///< the "sizes" object
 };
 
 struct LoadedDomain {

@@ -121,6 +121,16 @@ class ImplicitOracle final : public DomainOracle {
   /// labels around it are the patch's sides).
   /// Returns the closest verified candidate, nullopt if none converges.
   std::optional<Point3> project(const Point3& p, PatchId patch) const override;
+  /// Of the zero set of the function that carries the patch, at the point
+  /// that up to 4 Newton steps along the gradient reach from p: the principal
+  /// curvatures are the eigenvalues of its Hessian restricted to the tangent
+  /// plane, over |grad f|. Gradient and Hessian by central differences of
+  /// step 1e-4 x the box diagonal (19 evaluations, 7 per Newton step; the error grows as
+  /// (step / radius)^2, 1% at a radius of 10 steps, and sizes below the
+  /// default minimum size, 1e-4 of the diagonal, are clamped anyway).
+  /// 0 on a boundary no function carries (the box's faces); nullopt for an
+  /// unknown patch, where the gradient vanishes or the function is not finite.
+  std::optional<double> curvature(const Point3& p, PatchId patch) const override;
   /// 1e-10 times the box diagonal.
   double tolerance() const override { return tolerance_; }
   /// Corners: endpoints of the open curve pieces (empty without curves).

@@ -109,6 +109,18 @@ class DomainOracle {
     return limit;
   }
 
+  /// The largest principal curvature of `patch` in absolute value (1 / the
+  /// smallest radius of curvature; 0 on a plane) near p, a point on or near
+  /// the patch (as for project()), for sizes that follow it (--curvature).
+  /// nullopt where the oracle cannot tell (a pole, a failed projection). The
+  /// built-in oracles answer it from their exact geometry; the default knows
+  /// nothing, and sizes by curvature then follow the curves only.
+  virtual std::optional<double> curvature(const Point3& p, PatchId patch) const {
+    (void)p;
+    (void)patch;
+    return std::nullopt;
+  }
+
   /// Absolute accuracy of the points returned by intersect(), initial_points() and project().
   virtual double tolerance() const = 0;
 

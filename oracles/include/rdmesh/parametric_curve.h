@@ -60,6 +60,11 @@ class ParametricCurve final : public Curve {
   std::vector<double> plane_crossings(const Point3& normal, double offset, double ta,
                                       double tb) const override;
 
+  /// |gamma' x gamma''| / |gamma'|^3, both derivatives by finite differences
+  /// (gamma'' of 4th order, 2nd order one-sided near the ends) with the step
+  /// of derivative().
+  double curvature(double t) const override;
+
   /// gamma'(t) by finite differences (4th order), never evaluating outside [t0, t1].
   Point3 derivative(double t) const;
 

@@ -37,6 +37,11 @@ class PolylineCurve final : public Curve {
   /// plane gives its start).
   std::vector<double> plane_crossings(const Point3& normal, double offset, double ta,
                                       double tb) const override;
+  /// Discrete: at each inner vertex (every vertex of a closed polyline) the
+  /// curvature of the circle through it and its two neighbours (exact for
+  /// points on a circle), linear in t between vertices; an open polyline's
+  /// ends take their neighbour's value (0 with two points).
+  double curvature(double t) const override;
 
  private:
   std::size_t segment_of(double t) const;
@@ -44,6 +49,7 @@ class PolylineCurve final : public Curve {
 
   std::vector<Point3> points_;
   std::vector<double> cumulative_;  // arc length at each vertex
+  std::vector<double> vertex_curvature_;
   bool closed_ = false;
 };
 

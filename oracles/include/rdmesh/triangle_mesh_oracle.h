@@ -94,6 +94,13 @@ class TriangleMeshOracle final : public DomainOracle {
   /// The closest point of the patch's triangles (exact up to rounding); nullopt
   /// for an unknown patch.
   std::optional<Point3> project(const Point3& p, PatchId patch) const override;
+  /// Discrete, per patch: at each vertex of the patch's triangles, the largest
+  /// |2 n . (q - v)| / |q - v|^2 over its neighbours q in the patch (the
+  /// curvature of the circle through q tangent to the plane of normal n at v;
+  /// n the angle-weighted normal of the vertex's triangles in the patch, so
+  /// exact for vertices on a sphere or a cylinder), interpolated linearly over
+  /// the patch's triangle nearest p. nullopt for an unknown patch.
+  std::optional<double> curvature(const Point3& p, PatchId patch) const override;
   /// 1e-10 times the mesh's box diagonal.
   double tolerance() const override { return tolerance_; }
   std::vector<CornerInfo> corners() const override { return corner_infos_; }
@@ -114,6 +121,7 @@ class TriangleMeshOracle final : public DomainOracle {
   using EdgeFlags = std::vector<std::array<bool, 3>>;
   void build_subdomains(int component_count);
   void build_patches(const std::vector<std::array<int, 3>>& neighbors, const EdgeFlags& sharp);
+  void build_curvature();  // triangle_mesh_curvature.cpp
   // triangle_mesh_features.cpp
   EdgeFlags sharp_edges(const std::vector<std::array<int, 3>>& neighbors) const;
   void build_features(const std::vector<std::array<int, 3>>& neighbors, const EdgeFlags& sharp);
@@ -144,6 +152,7 @@ class TriangleMeshOracle final : public DomainOracle {
   std::vector<SubdomainInfo> subdomain_infos_;
   std::vector<PatchInfo> patch_infos_;
   std::vector<std::vector<int>> patch_triangles_;  // indexed by patch id - 1
+  std::vector<std::array<double, 3>> corner_curvature_;  // per triangle corner, within its patch
   int sharp_edge_count_ = 0;
   std::vector<CornerInfo> corner_infos_;
   std::vector<CurveInfo> curve_infos_;

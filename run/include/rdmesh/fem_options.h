@@ -23,6 +23,7 @@ struct FemOptions {
   std::vector<std::string> size_on;  ///< --size-on KIND:WHICH=SIZE (repeatable)
   std::string sizes_file;            ///< --sizes FILE.json: {"KIND:WHICH": SIZE, "grade": G}
   std::optional<double> grade;       ///< --grade G (default: the file's, else 1.4)
+  std::optional<double> curvature;   ///< --curvature N: elements per full turn (default: the file's)
 };
 
 void add_fem_options(CLI::App& app, FemOptions& opt);
@@ -33,25 +34,36 @@ void add_fem_options(CLI::App& app, FemOptions& opt);
 void check_fem_options(const FemOptions& opt, const std::string& input, const std::string& output,
                        bool surface_only);
 
-/// Reads --size-on and --sizes, lowers `criteria` near the entities named
-/// (entity_sizes.h); returns the sizes asked. Throws InputError for a bad
-/// entity, size, grade or sizes file.
-std::vector<EntitySize> apply_size_options(const FemOptions& opt, const DomainOracle& oracle,
-                                           Criteria& criteria);
+/// The sizes asked and what applying them found.
+struct AppliedSizes {
+  SizeRequests requests;
+  SizesApplied applied;
+};
+
+/// Reads --size-on, the domain file's "sizes" (`from_domain`), --sizes,
+/// --grade and --curvature (entities from all; the later ones override the
+/// grade and curvature), lowers `criteria` accordingly (entity_sizes.h). Throws
+/// InputError for a bad entity, size, grade, curvature or sizes file.
+AppliedSizes apply_size_options(const FemOptions& opt, const std::optional<SizeSpec>& from_domain,
+                                const DomainOracle& oracle, Criteria& criteria);
 
 struct FemResults {
   std::vector<AchievedSize> sizes;  ///< per entity of --size-on / --sizes
   double grade = 0;
+  double sizing_seconds = 0;  ///< sampling entities and curvatures before meshing
+  std::optional<CurvatureStats> curvature;
+  std::optional<CurvatureAchieved> curvature_achieved;
   std::optional<SecondOrderStats> second_order;
   std::optional<PartitionStats> partitions;
 };
 
 /// Measures the sizes asked, then turns `mesh` into what the options ask for
 /// (second order, then partitions).
-FemResults apply_fem_options(const FemOptions& opt, const std::vector<EntitySize>& sizes,
-                             TetMesh& mesh, const DomainOracle& oracle);
+FemResults apply_fem_options(const FemOptions& opt, const AppliedSizes& sizes, TetMesh& mesh,
+                             const DomainOracle& oracle, double min_size);
 
-/// The report's "entity_sizes", "second_order" and "partitions" entries (null when not asked).
+/// The report's "entity_sizes", "curvature_sizes", "second_order" and "partitions" entries
+/// (null when not asked).
 nlohmann::json fem_json(const FemResults& results);
 
 /// Summary lines (empty when no FEM option was used).

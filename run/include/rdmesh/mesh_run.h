@@ -48,7 +48,7 @@ nlohmann::json run_report(const Options& opt, const DomainOracle& oracle, const 
 
 /// apply_fem_options on the run's mesh (second order, partitions; the sizes
 /// asked measured), announced to `options.progress`; fills run.fem.
-void apply_fem(const Options& opt, const std::vector<EntitySize>& sizes, const DomainOracle& oracle,
+void apply_fem(const Options& opt, const AppliedSizes& sizes, const DomainOracle& oracle,
                const MeshOptions& options, MeshRun& run);
 
 /// What `opt` asks to write, as the command does, each announced as a phase:
