@@ -17,9 +17,9 @@ optimize (default True; False is --no-optimize),
 time_limit, keep_bad_mesh, check ("cheap" or "full"), order (1, or 2: 10-node
 tetrahedra), partitions (METIS), size_on ("face:12=0.5", or a list of them),
 sizes (a .json file), grade, curvature (elements per turn); and what the run writes,
-as the CLI: output (a
-.msh/.mesh/.vtu file; none by default, Mesh.write writes later), binary, ascii,
-format ("msh41" or "msh22"), report (a .json file; Mesh.report has it anyway),
+as the CLI: output (a .msh/.mesh/.vtu file; none by default, Mesh.write writes
+later), binary, ascii, format ("msh41" or "msh22"), report (a .json file;
+Mesh.report has it anyway),
 picture (a .png), view, picture_size, cut. They are parsed by the CLI's own
 parser, with its defaults, its checks and its error messages; the run is the
 CLI's (the default sizes of CAD models, the fidelity check, the report).

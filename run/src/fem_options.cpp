@@ -29,19 +29,40 @@ void add_fem_options(CLI::App& app, FemOptions& opt) {
                  "size pi R / N where the radius of curvature is R, graded by --grade")
       ->check(CLI::PositiveNumber);
   app.add_option("--grade", opt.grade,
-                 "Entity sizes grow by at most this factor from one element to the next (> 1; "
-                 "default 1.4)");
+                 "Entity and curvature sizes grow by at most this factor from one element to the "
+                 "next (> 1; default 1.4)");
 }
 
 AppliedSizes apply_size_options(const FemOptions& opt, const std::optional<SizeSpec>& from_domain,
                                 const DomainOracle& oracle, Criteria& criteria) {
-  SizeSpec spec = from_domain.value_or(SizeSpec{});
-  if (!opt.sizes_file.empty()) merge_size_spec(spec, read_size_spec(opt.sizes_file));
   AppliedSizes out;
-  std::vector<EntitySize> entities;  // --size-on first, then the files'
-  for (const std::string& s : opt.size_on) entities.push_back(parse_entity_size(s, oracle));
-  out.requests = resolve_size_spec(spec, oracle);
-  out.requests.entities.insert(out.requests.entities.begin(), entities.begin(), entities.end());
+  // --size-on first, then the domain file's, then the sizing file's; an
+  // entity a file names but the domain lacks is that file's error.
+  for (const std::string& s : opt.size_on)
+    out.requests.entities.push_back(parse_entity_size(s, oracle));
+  SizeSpec spec;
+  if (from_domain) {
+    spec = *from_domain;
+    try {
+      (void)resolve_size_spec(spec, oracle);
+    } catch (const InputError& e) {
+      throw InputError("the domain file's 'sizes': " + std::string(e.what()));
+    }
+  }
+  if (!opt.sizes_file.empty()) {
+    const SizeSpec file = read_size_spec(opt.sizes_file);
+    try {
+      (void)resolve_size_spec(file, oracle);
+    } catch (const InputError& e) {
+      throw InputError(opt.sizes_file, e.what());
+    }
+    merge_size_spec(spec, file);
+  }
+  const SizeRequests files = resolve_size_spec(spec, oracle);
+  out.requests.entities.insert(out.requests.entities.end(), files.entities.begin(),
+                               files.entities.end());
+  out.requests.grade = files.grade;
+  out.requests.curvature = files.curvature;
   if (opt.grade) out.requests.grade = *opt.grade;
   if (opt.curvature) out.requests.curvature = *opt.curvature;
   out.applied = apply_sizes(oracle, out.requests, criteria);

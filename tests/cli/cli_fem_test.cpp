@@ -202,12 +202,22 @@ TEST(CliFem, BadCurvatureIsAnInputError) {
   dir.write("zero.json", R"({"curvature": 0})");
   dir.write("d.json", R"({"bbox": [-1, -1, -1, 1, 1, 1], "functions": {"s": "x^2+y^2+z^2-0.25"},
                           "sizes": {"bogus": 1}})");
-  for (const std::string args : {sample + " --curvature 0", sample + " --curvature x",
-                                 sample + " --sizes zero.json", std::string("d.json")}) {
+  dir.write("d9.json", R"({"bbox": [-1, -1, -1, 1, 1, 1], "functions": {"s": "x^2+y^2+z^2-0.25"},
+                           "sizes": {"patch:9": 0.1}})");
+  dir.write("face9.json", R"({"face:9": 0.1})");
+  for (const std::string args :
+       {sample + " --curvature 0", sample + " --curvature x", sample + " --sizes zero.json",
+        std::string("d.json"), std::string("d9.json"), sample + " --sizes face9.json"}) {
     const CliRun run = run_cli(args + " -o out.msh", dir.path());
     EXPECT_EQ(run.exit_code, 2) << args << ": " << run.output;
     EXPECT_EQ(run.output.rfind("rdmesh: error: ", 0), 0u) << run.output;
     EXPECT_FALSE(std::filesystem::exists(dir.file("out.msh"))) << args;
+    if (args == "d9.json") {
+      EXPECT_NE(run.output.find("'sizes': patch:9"), std::string::npos) << run.output;
+    }
+    if (args.find("face9.json") != std::string::npos) {
+      EXPECT_NE(run.output.find("face9.json: face:9"), std::string::npos) << run.output;
+    }
   }
 }
 

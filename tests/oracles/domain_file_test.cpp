@@ -87,6 +87,25 @@ TEST(DomainFile, MinimalFileAndHints) {
   EXPECT_FALSE(d.hints.radius_edge.has_value());
 }
 
+TEST(DomainFile, SizesObjectAsASizingFileWritesIt) {
+  const LoadedDomain d = parse_domain_json(
+      "{" + kBox + ", " + kBall +
+          R"(, "sizes": {"patch:1": 0.05, "subdomain:ball": 0.1, "grade": 1.3, "curvature": 12}})",
+      "test.json");
+  ASSERT_TRUE(d.hints.sizes.has_value());
+  ASSERT_EQ(d.hints.sizes->entities.size(), 2u);
+  EXPECT_EQ(d.hints.sizes->entities[0].first, "patch:1");
+  EXPECT_EQ(d.hints.sizes->entities[1].second, 0.1);
+  EXPECT_EQ(d.hints.sizes->grade, 1.3);
+  EXPECT_EQ(d.hints.sizes->curvature, 12);
+  EXPECT_FALSE(parse_domain_json("{" + kBox + ", " + kBall + "}", "t").hints.sizes.has_value());
+  expect_error("{" + kBox + ", " + kBall + R"(, "sizes": {"curvature": -3}})",
+               {"test.json: 'sizes': ", "'curvature' must be a positive number"});
+  expect_error("{" + kBox + ", " + kBall + R"(, "sizes": {"patch1": 0.1}})",
+               {"'sizes': unknown key 'patch1'"});
+  expect_error("{" + kBox + ", " + kBall + R"(, "sizes": 0.1})", {"'sizes': expected an object"});
+}
+
 TEST(DomainFile, SubdomainsWithOutsideAndSingleNames) {
   LoadedDomain d = parse_domain_json("{" + kBox + R"(, "functions": {
       "ball": "x^2 + y^2 + z^2 - 1", "hole": "x^2 + y^2 - 0.09"},
