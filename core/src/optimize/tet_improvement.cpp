@@ -123,7 +123,8 @@ TetImprovementStats improve_tets(TetMesh& mesh, const TetImprovementOptions& opt
       if (topo.alive(t) && topo.quality(t) < options.insertion_bound_deg &&
           stats.vertex_insertions < max_insertions &&
           (detail::plan_insertion(topo, t, 1, topo.vertex_count(), where, change) ||
-           detail::plan_insertion(topo, t, 2, topo.vertex_count(), where, change))) {
+           detail::plan_insertion(topo, t, 2, topo.vertex_count(), where, change) ||
+           detail::plan_insertion(topo, t, 3, topo.vertex_count(), where, change))) {
         const int v = topo.add_vertex(where);
         detail::apply(topo, change);
         (void)detail::smooth_vertex(topo, v);

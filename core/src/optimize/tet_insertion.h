@@ -3,7 +3,7 @@
 // and flat caps whose four vertices lie on features or patches).
 //
 // The cavity is the tetrahedron and its neighbours across unconstrained
-// faces inside the same subdomain (one or two faces away); it is refused when a constrained face or
+// faces inside the same subdomain (one, two or three faces away); it is refused when a constrained face or
 // edge would be inside it or a vertex would lose its last tetrahedron. The
 // new vertex is joined to every face on the cavity's boundary; each new
 // tetrahedron must be positively oriented (CGAL's exact predicate), so the new
