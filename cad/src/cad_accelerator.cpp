@@ -11,8 +11,10 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Edge.hxx>
 #include <algorithm>
+#include <string>
 
 #include "cad_model.h"
+#include "rdmesh/errors.h"
 #include "surface_evaluator.h"
 
 namespace rdmesh::cad {
@@ -56,7 +58,7 @@ std::vector<BoundaryCurve> boundary_curves(const TopoDS_Face& face) {
 
 }  // namespace
 
-void build_accelerator(CadOracle::Model& m) {
+void build_accelerator(CadOracle::Model& m, const PrepDeadline& deadline) {
   const double size = m.box.diagonal();
   std::vector<Box3> boxes;
   int untessellated = 0;
@@ -64,13 +66,24 @@ void build_accelerator(CadOracle::Model& m) {
   // doubling copies it and faults in fresh pages at each step. Pages reserved
   // but never written cost nothing.
   m.triangles.reserve(256 * m.faces.size());
+  const std::size_t model_cells = max_model_cells(m.faces.size());
+  std::size_t cells = 0;
   for (std::size_t i = 0; i < m.faces.size(); ++i) {
     FacePatch& f = m.faces[i];
     const int face = static_cast<int>(i);
     f.first_triangle = static_cast<int>(m.triangles.size());
     try {
       const SurfaceEvaluator s(f);
-      tessellate_face(f, face, s, size, m.triangles);
+      const std::size_t left = model_cells - cells;
+      try {
+        tessellate_face(f, face, s, size, m.triangles, std::min(kMaxFaceCells, left), deadline);
+      } catch (const InputError&) {
+        if (left >= kMaxFaceCells) throw;
+        throw InputError("following the model's " + std::to_string(m.faces.size()) +
+                         " surfaces needs more than " + std::to_string(model_cells) +
+                         " cells (surfaces far from their edges, as with corrupt control points?)");
+      }
+      cells += f.cells.nodes.size();
     } catch (const Standard_Failure&) {
       m.triangles.resize(f.first_triangle);
       f.cells = {};  // every (u, v) is a boundary one: the classifier decides

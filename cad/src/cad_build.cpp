@@ -336,7 +336,8 @@ double max_tolerance(const TopoDS_Shape& s) {
 
 }  // namespace
 
-std::unique_ptr<CadOracle::Model> build_model(ReadShape read, const std::string& source) {
+std::unique_ptr<CadOracle::Model> build_model(ReadShape read, const std::string& source,
+                                              const PrepDeadline& deadline) {
   auto m = std::make_unique<CadOracle::Model>();
   m->log = std::move(read.log);
   try {
@@ -357,7 +358,7 @@ std::unique_ptr<CadOracle::Model> build_model(ReadShape read, const std::string&
       f.box.hi = f.box.hi + Point3{m->tolerance, m->tolerance, m->tolerance};
     }
     collect_curves(*m, patch_faces);
-    build_accelerator(*m);
+    build_accelerator(*m, deadline);
     compute_seeds(*m);  // from the accelerator's tessellation
   } catch (const InputError& e) {
     if (!e.file().empty() || source.empty()) throw;

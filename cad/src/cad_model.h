@@ -212,12 +212,14 @@ struct CadOracle::Model {
 
 namespace cad {
 /// Builds the oracle data from a read shape (cad_build.cpp). Throws InputError.
-std::unique_ptr<CadOracle::Model> build_model(ReadShape read, const std::string& source);
+/// `deadline` bounds the time of the tessellation (face_tessellation.h).
+std::unique_ptr<CadOracle::Model> build_model(ReadShape read, const std::string& source,
+                                              const PrepDeadline& deadline = {});
 /// Picks points inside each face from its tessellation, built first (cad_seeds.cpp).
 void compute_seeds(CadOracle::Model& model);
 /// Builds each face's cells, triangles and boundary curves, and the triangle trees
 /// (face_tessellation.cpp, face_boundary.cpp).
-void build_accelerator(CadOracle::Model& model);
+void build_accelerator(CadOracle::Model& model, const PrepDeadline& deadline);
 /// Removes OpenCASCADE's message printers (once; its translators print to stdout).
 void silence_opencascade();
 /// "STANDARD_FAILURE_TYPE: message" of an OpenCASCADE exception.

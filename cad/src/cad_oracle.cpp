@@ -7,12 +7,14 @@
 #include <GeomLProp_SLProps.hxx>
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <limits>
 
 #include "cad_model.h"
 #include "face_intersector.h"
 #include "face_projection.h"
+#include "isolated_read.h"
 #include "rdmesh/detail/triangle_bvh.h"
 #include "thread_state.h"
 
@@ -341,7 +343,12 @@ double CadOracle::exact_area(PatchId id) const {
 
 std::unique_ptr<CadOracle> load_cad_file(const std::string& path, const CadOptions& options) {
   cad::ReadShape read = cad::read_shape(path, options);
-  return std::make_unique<CadOracle>(cad::build_model(std::move(read), path));
+  cad::PrepDeadline deadline;
+  deadline.seconds = cad::read_time_limit_seconds(options, path);
+  deadline.at = std::chrono::steady_clock::now() +
+                std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                    std::chrono::duration<double>(deadline.seconds));
+  return std::make_unique<CadOracle>(cad::build_model(std::move(read), path, deadline));
 }
 
 }  // namespace rdmesh

@@ -7,8 +7,11 @@
 #include <array>
 #include <cmath>
 #include <gp_Pnt2d.hxx>
+#include <sstream>
+#include <string>
 
 #include "cad_model.h"
+#include "rdmesh/errors.h"
 #include "surface_evaluator.h"
 
 namespace rdmesh::cad {
@@ -102,8 +105,14 @@ using Known = unsigned;
 class Builder {
  public:
   Builder(FacePatch& f, int face, const SurfaceEvaluator& s, double size,
-          std::vector<SurfaceTriangle>& out)
-      : f_(f), face_(face), s_(s), size_(size), out_(out) {
+          std::vector<SurfaceTriangle>& out, std::size_t max_nodes, const PrepDeadline& deadline)
+      : f_(f),
+        face_(face),
+        s_(s),
+        size_(size),
+        max_nodes_(max_nodes),
+        deadline_(deadline),
+        out_(out) {
     planar_ = f.kind == SurfaceKind::plane;
     face_size_ = f.box.diagonal();
     boundary_segments(f, f.cells.segments, f.cells.fine);
@@ -133,6 +142,11 @@ class Builder {
   void split(int index, const Box2& r, int axis, double cut, const std::vector<int>& pieces,
              int depth, const Grid* g) {
     const int child = static_cast<int>(f_.cells.nodes.size());
+    if (f_.cells.nodes.size() + 2 > max_nodes_) {
+      throw InputError("face " + std::to_string(face_ + 1) +
+                       ": following its surface needs more than " + std::to_string(max_nodes_) +
+                       " cells (a surface far from its edges, as with a corrupt control point?)");
+    }
     f_.cells.nodes.resize(child + 2);
     f_.cells.nodes[index].child = child;
     f_.cells.nodes[index].axis = static_cast<std::uint8_t>(axis);
@@ -176,6 +190,7 @@ class Builder {
 
   void build(int index, const Box2& r, const std::vector<int>& parent_pieces, int depth, Grid g,
              Known known) {
+    deadline_.check();
     std::vector<int> pieces;  // the boundary chords whose tubes meet the cell
     for (int p : parent_pieces) {
       if (meets(f_.cells.segments[p], r)) pieces.push_back(p);
@@ -270,12 +285,22 @@ class Builder {
   int face_;
   const SurfaceEvaluator& s_;
   double size_, face_size_ = 0;
+  std::size_t max_nodes_;
+  const PrepDeadline& deadline_;
   bool planar_ = false;
   std::vector<double> u_cuts_, v_cuts_;
   std::vector<SurfaceTriangle>& out_;
 };
 
 }  // namespace
+
+void PrepDeadline::check() const {
+  if (std::chrono::steady_clock::now() <= at) return;
+  std::ostringstream o;
+  o << "preparing the model did not finish within " << seconds
+    << " s (malformed geometry: surfaces far from their edges or huge tolerances?)";
+  throw InputError(o.str());
+}
 
 Box3 triangle_box(const SurfaceTriangle& t, double r) {
   Box3 b{t.p[0], t.p[0]};
@@ -341,8 +366,9 @@ void measure_triangle(const SurfaceEvaluator& s, SurfaceTriangle& t,
 }
 
 void tessellate_face(FacePatch& f, int face, const SurfaceEvaluator& surface, double size,
-                     std::vector<SurfaceTriangle>& out) {
-  Builder(f, face, surface, size, out).run();
+                     std::vector<SurfaceTriangle>& out, std::size_t max_nodes,
+                     const PrepDeadline& deadline) {
+  Builder(f, face, surface, size, out, max_nodes, deadline).run();
 }
 
 }  // namespace rdmesh::cad

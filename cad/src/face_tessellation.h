@@ -11,6 +11,8 @@
 // 1.5 plus 0.005 rad). Both are measured, not assumed, and both err on the large side.
 #pragma once
 
+#include <chrono>
+#include <cstddef>
 #include <vector>
 
 #include "rdmesh/geometry.h"
@@ -33,10 +35,33 @@ struct SurfaceTriangle {
   bool inside = false;   ///< the triangle's cell is an inside cell
 };
 
+/// When preparing a read model must end: a valid model's surfaces are followed
+/// in a second or two, a malformed one's (edge tolerances so large that every
+/// (u, v) is near the boundary, where OpenCASCADE's classifier takes
+/// milliseconds a point) could take hours. Default: never.
+struct PrepDeadline {
+  std::chrono::steady_clock::time_point at = std::chrono::steady_clock::time_point::max();
+  double seconds = 0;  ///< the limit, for the message
+  /// Throws InputError("preparing the model did not finish within N s ...") once passed.
+  void check() const;
+};
+
 /// Builds `f.cells` and appends the face's triangles to `out`. `size` is the
-/// model's diagonal (caps cell sizes).
+/// model's diagonal (caps cell sizes). At most `max_nodes` cells (kd-tree
+/// nodes) may be made: a face needing more throws InputError, for a surface
+/// that strays wildly from its edges (a corrupt control point) would otherwise
+/// be cut into 2^24 cells per branch, for hours. The shared STEP/BREP files need
+/// at most 5,887 cells for a face and 96,000 for a model.
 void tessellate_face(FacePatch& f, int face, const SurfaceEvaluator& surface, double size,
-                     std::vector<SurfaceTriangle>& out);
+                     std::vector<SurfaceTriangle>& out, std::size_t max_nodes,
+                     const PrepDeadline& deadline);
+
+/// The most cells tessellate_face() may make for one face, and for a model of
+/// `faces` faces in all (faces x 1024 above a million).
+constexpr std::size_t kMaxFaceCells = std::size_t{1} << 18;
+constexpr std::size_t max_model_cells(std::size_t faces) {
+  return (std::size_t{1} << 20) + 1024 * faces;
+}
 
 /// The box of t's nodes widened by r on every side.
 Box3 triangle_box(const SurfaceTriangle& t, double r);

@@ -206,16 +206,8 @@ std::string problem_of(const InputError& e, const std::string& path) {
 
 #ifdef RDMESH_CAN_FORK
 
-// The time limit in seconds, at most 1e9: the option's when positive, else 10 s
-// plus 20 s per MB of the file (reading a 1 MB STEP assembly, sewing and
-// checking it takes about 5 s; a 3 kB mutant of a BREP file looped in
-// OpenCASCADE's reader for the whole minute the limit once was).
 double time_limit(const CadOptions& options, const std::string& path) {
-  if (options.read_time_limit > 0) return std::min(options.read_time_limit, 1e9);
-  std::error_code ec;
-  const std::uintmax_t bytes = std::filesystem::file_size(path, ec);
-  const double mb = ec ? 0.0 : static_cast<double>(bytes) / 1e6;
-  return std::min(std::round(10.0 + 20.0 * mb), 1e9);  // whole seconds, for the message
+  return read_time_limit_seconds(options, path);
 }
 
 // ---- The child.
@@ -427,6 +419,14 @@ ReadShape read_in_child(const std::string& path, const std::string& format,
   if (m.outcome != Outcome::shape) throw InputError(path, m.text);
   return std::move(m.read);
 #endif
+}
+
+double read_time_limit_seconds(const CadOptions& options, const std::string& path) {
+  if (options.read_time_limit > 0) return std::min(options.read_time_limit, 1e9);
+  std::error_code ec;
+  const std::uintmax_t bytes = std::filesystem::file_size(path, ec);
+  const double mb = ec ? 0.0 : static_cast<double>(bytes) / 1e6;
+  return std::min(std::round(10.0 + 20.0 * mb), 1e9);  // whole seconds, for the messages
 }
 
 }  // namespace rdmesh::cad

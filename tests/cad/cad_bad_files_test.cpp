@@ -78,5 +78,32 @@ TEST(CadBadFiles, AReaderThatLoopsIsStoppedWithinSecondsOnASmallFile) {
   EXPECT_EQ(scratch.entries(), 0u);
 }
 
+TEST(CadBadFiles, ASurfaceFarFromItsEdgesIsStoppedWhileThePartIsPrepared) {
+  // One control point of gmsh_periodic_u_cst.step's B-spline surface moved
+  // to z = 1e12 (fuzz/cli_campaign.py found it): the reader and the validity
+  // check pass, then every cell of the face's tessellation lies near its
+  // boundary, where OpenCASCADE's classifier takes milliseconds a point, and
+  // the face was cut for hours. Preparing the model gets the read's limit.
+  RDMESH_REQUIRE_SHARED_DATA(part, "step/gmsh_periodic_u_cst.step");
+  std::ifstream in(part, std::ios::binary);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string point = "(4.00446619420881,-38.8231791955894,-8.15755226383301)";
+  const std::size_t at = text.find(point);
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, point.size(), "(4.00446619420881,-38.8231791955894,1000000000000)");
+  const ScratchDir inputs, scratch;
+  const std::string mutant = inputs.write("mutant.step", text);
+  const auto start = std::chrono::steady_clock::now();
+  const CliRun run = run_cli("'" + mutant + "' -o out.mesh -q", scratch.path());
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_NE(run.output.find("preparing the model did not finish within 11 s"), std::string::npos)
+      << run.output;
+  EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << run.output;
+  EXPECT_LT(seconds, 40.0);
+  EXPECT_EQ(scratch.entries(), 0u);
+}
+
 }  // namespace
 }  // namespace rdmesh::test
