@@ -344,7 +344,9 @@ double CadOracle::exact_area(PatchId id) const {
 std::unique_ptr<CadOracle> load_cad_file(const std::string& path, const CadOptions& options) {
   cad::ReadShape read = cad::read_shape(path, options);
   cad::PrepDeadline deadline;
-  deadline.seconds = cad::read_time_limit_seconds(options, path);
+  // Three times the read's: valid parts prepare in seconds, a loaded machine
+  // must not turn one away, and a malformed one once took hours.
+  deadline.seconds = 3 * cad::read_time_limit_seconds(options, path);
   deadline.at = std::chrono::steady_clock::now() +
                 std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                     std::chrono::duration<double>(deadline.seconds));

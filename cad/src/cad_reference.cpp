@@ -12,6 +12,7 @@
 #include <IntCurvesFace_Intersector.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
+#include <algorithm>
 #include <gp_Lin.hxx>
 #include <gp_Pnt2d.hxx>
 #include <gp_Vec2d.hxx>
@@ -142,6 +143,7 @@ CadReference::CellCheck CadReference::check_cells(int per_face, unsigned seed) {
         pcurves.emplace_back(TopoDS::Edge(ex.Current()), f.face);
       }
       const double du = f.u1 - f.u0, dv = f.v1 - f.v0;
+      int random = 0, undecided = 0;
       for (int k = 0; k < per_face; ++k) {
         double u = f.u0 + uniform(rng) * du, v = f.v0 + uniform(rng) * dv;
         if (k % 2 && !pcurves.empty()) {  // near the boundary
@@ -152,11 +154,19 @@ CadReference::CellCheck CadReference::check_cells(int per_face, unsigned seed) {
           u = q.X() + r * du * std::cos(angle), v = q.Y() + r * dv * std::sin(angle);
         }
         const cad::UvState mine = f.cells.state_at(u, v);
+        if (k % 2 == 0) {
+          ++random;
+          undecided += mine == cad::UvState::boundary;
+        }
         if (mine == cad::UvState::boundary) continue;
         const TopAbs_State theirs = c->Perform(gp_Pnt2d(u, v));
         if (theirs != TopAbs_IN && theirs != TopAbs_OUT) continue;
         ++out.compared;
         out.disagree += (mine == cad::UvState::inside) != (theirs == TopAbs_IN);
+      }
+      if (random > 0 && std::min(du, dv) > 1e-6 * std::max(du, dv)) {  // not flat in (u, v)
+        out.worst_undecided =
+            std::max(out.worst_undecided, static_cast<double>(undecided) / random);
       }
     }
   } catch (const Standard_Failure& e) {

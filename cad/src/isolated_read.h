@@ -33,7 +33,8 @@ ReadShape read_in_child(const std::string& path, const std::string& format,
 /// when positive, else 10 s plus 20 s per MB of the file, in whole seconds
 /// (reading a 1 MB STEP assembly, sewing and checking it takes about 5 s; a
 /// 3 kB mutant of a BREP file looped in OpenCASCADE's reader for the whole
-/// minute the limit once was). Preparing the read model (build_model) gets as long.
+/// minute the limit once was). Preparing the read model (build_model) gets three
+/// times as long.
 double read_time_limit_seconds(const CadOptions& options, const std::string& path);
 
 }  // namespace rdmesh::cad

@@ -59,14 +59,20 @@ int crossing(const UvSegment& s, double ru, double rv, double u, double v, doubl
   return (o1 > 0) != (o2 > 0) && (o3 > 0) != (o4 > 0) ? 1 : 0;
 }
 
-// How far in (u, v) a 3D distance `d` can reach at (u, v): d over the smallest
-// stretch of the surface's Jacobian [Su Sv] there, at most `cap`.
-double uv_reach(const GeomAdaptor_Surface& s, double u, double v, double d, double cap) {
+// How far in (u, v) a 3D distance `d` can reach from chord s: d over the
+// smallest stretch of the surface's Jacobian [Su Sv] at the chord's middle, at
+// most `cap`. A degenerated edge (a pole) is one 3D point: the points within d
+// of it lie within d over the stretch across the chord (Sv at a sphere's
+// pole, where Su vanishes and the smallest stretch would give the cap).
+double uv_reach(const GeomAdaptor_Surface& s, const UvSegment& chord, bool degenerated, double d,
+                double cap) {
   gp_Pnt p;
   gp_Vec su, sv;
-  s.D1(u, v, p, su, sv);
+  s.D1(0.5 * (chord.au + chord.bu), 0.5 * (chord.av + chord.bv), p, su, sv);
   const double a = su.SquareMagnitude(), b = su.Dot(sv), c = sv.SquareMagnitude();
-  const double smallest = 0.5 * (a + c) - std::sqrt(0.25 * (a - c) * (a - c) + b * b);
+  double smallest = 0.5 * (a + c) - std::sqrt(0.25 * (a - c) * (a - c) + b * b);
+  const double eu = chord.bu - chord.au, ev = chord.bv - chord.av, l = std::hypot(eu, ev);
+  if (degenerated && l > 0) smallest = (su * (-ev / l) + sv * (eu / l)).SquareMagnitude();
   return smallest > 0 && d < cap * std::sqrt(smallest) ? d / std::sqrt(smallest) : cap;
 }
 
@@ -77,6 +83,7 @@ void boundary_segments(const FacePatch& f, std::vector<UvSegment>& out,
   out.clear();
   fine.clear();
   std::vector<double> edge_tolerance, fine_tolerance;  // per chord
+  std::vector<char> degenerated, fine_degenerated;     // per chord: of a degenerated edge
   std::vector<std::array<double, 2>> ranges;           // per chord of the edge at hand
   std::vector<gp_Pnt2d> ends;
   const double uv_size = std::hypot(f.u1 - f.u0, f.v1 - f.v0);
@@ -84,6 +91,12 @@ void boundary_segments(const FacePatch& f, std::vector<UvSegment>& out,
   const double face_tolerance = BRep_Tool::Tolerance(f.face);
   for (TopExp_Explorer ex(f.face, TopAbs_EDGE); ex.More(); ex.Next()) {
     const TopoDS_Edge& edge = TopoDS::Edge(ex.Current());
+    // An INTERNAL edge (a contact line a general fuse imprinted, say) has the
+    // face on both sides and an EXTERNAL one on neither: neither bounds the
+    // face, and as chords they would flip the parity of every point across
+    // them; their loose ends made the gap below the width of the face, so
+    // that every point of the bearing balls' faces went to the classifier.
+    if (edge.Orientation() == TopAbs_INTERNAL || edge.Orientation() == TopAbs_EXTERNAL) continue;
     const BRepAdaptor_Curve2d c(edge, f.face);
     // Start at least as densely as the face classifier samples the pcurve (and
     // four points per C2 piece): a narrow excursion of a poorly approximated
@@ -115,6 +128,8 @@ void boundary_segments(const FacePatch& f, std::vector<UvSegment>& out,
     }
     edge_tolerance.resize(out.size(), BRep_Tool::Tolerance(edge));
     fine_tolerance.resize(fine.size(), BRep_Tool::Tolerance(edge));
+    degenerated.resize(out.size(), BRep_Tool::Degenerated(edge));
+    fine_degenerated.resize(fine.size(), BRep_Tool::Degenerated(edge));
   }
   // Consecutive pcurves meet only within their vertex tolerance: the widest gap
   // between an end and the nearest other end joins every reach.
@@ -132,13 +147,14 @@ void boundary_segments(const FacePatch& f, std::vector<UvSegment>& out,
   // The face classifier is built with the face's tolerance as its (u, v)
   // tolerance: within it of the boundary it may answer ON.
   const double margin = 1e-7 * uv_size + 2 * face_tolerance + gap;
-  auto widen = [&](UvSegment& s, double edge_tol) {
-    const double um = 0.5 * (s.au + s.bu), vm = 0.5 * (s.av + s.bv);
+  auto widen = [&](UvSegment& s, double edge_tol, bool pole) {
     const double tolerance = std::max(edge_tol, face_tolerance);
-    s.reach += margin + 2 * uv_reach(surface, um, vm, tolerance, 0.05 * uv_size);
+    s.reach += margin + 2 * uv_reach(surface, s, pole, tolerance, 0.05 * uv_size);
   };
-  for (std::size_t i = 0; i < out.size(); ++i) widen(out[i], edge_tolerance[i]);
-  for (std::size_t i = 0; i < fine.size(); ++i) widen(fine[i], fine_tolerance[i]);
+  for (std::size_t i = 0; i < out.size(); ++i) widen(out[i], edge_tolerance[i], degenerated[i]);
+  for (std::size_t i = 0; i < fine.size(); ++i) {
+    widen(fine[i], fine_tolerance[i], fine_degenerated[i]);
+  }
 }
 
 UvState UvCells::state_at(double u, double v) const {

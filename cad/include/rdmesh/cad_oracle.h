@@ -76,7 +76,9 @@ struct CadOptions {
   bool isolate = true;
   /// Isolated reading: wall-clock seconds the child may take to read, sew,
   /// heal and check the model (a CPU-time limit a little above it backs it up);
-  /// 0: 10 s plus 20 s per MB of the file.
+  /// 0: 10 s plus 20 s per MB of the file. Preparing the read model (its
+  /// surfaces' tessellation), isolated or not, may take three times as long:
+  /// past that, an InputError "preparing the model did not finish within N s".
   double read_time_limit = 0;
   /// Isolated reading: how much address space the child may add to what it
   /// inherits, MiB; 0 is half the physical memory. Not applied under

@@ -41,9 +41,13 @@ class CadReference {
   /// in the face's (u, v) box, half near its pcurves (offset by 1e-5..1e-2 of
   /// the box). Points either side leaves undecided (the cells defer to the
   /// classifier, or the classifier answers ON) are not compared.
+  /// `worst_undecided`: over the faces of positive (u, v) extent, the largest share of the random
+  /// half that the cells leave to the classifier, whose slow path near the boundary takes
+  /// milliseconds a point (check_cells only).
   struct CellCheck {
     int compared = 0;
     int disagree = 0;
+    double worst_undecided = 0;
   };
   CellCheck check_cells(int per_face, unsigned seed);
 
