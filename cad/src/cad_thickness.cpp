@@ -16,13 +16,19 @@
 #include <GeomAPI_ProjectPointOnSurf.hxx>
 #include <Standard_Failure.hxx>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include "cad_model.h"
+#include "rdmesh/errors.h"
 
 namespace rdmesh {
 namespace {
+
+// How long measuring one face's thickness may take before the face is called malformed.
+constexpr int kThicknessSeconds = 10;
 
 /// The surface of face f at the point nearest to p: its unit normal and the
 /// normal curvatures along the u and v directions, signed positive where the
@@ -63,8 +69,17 @@ std::optional<double> CadOracle::curved_thickness(PatchId id) const {
   // neighbouring face right away (a fillet's edge), which says nothing of the
   // material behind the face.
   double thickness = 0;
+  // A few rays take microseconds on a valid face; on a surface a corrupt
+  // control point sent far from its edges (a fuzzed STEP file) each took
+  // OpenCASCADE's slow intersection path, for minutes in all.
+  const auto start = std::chrono::steady_clock::now();
   try {
     for (const Point3& s : m.seeds[static_cast<std::size_t>(id.value) - 1]) {
+      if (std::chrono::steady_clock::now() - start > std::chrono::seconds(kThicknessSeconds)) {
+        throw InputError("face " + std::to_string(id.value) +
+                         ": measuring the material behind it took over " +
+                         std::to_string(kThicknessSeconds) + " s (a malformed surface?)");
+      }
       const std::optional<LocalShape> shape = local_shape(f, s);
       if (!shape) continue;
       for (const double side : {1.0, -1.0}) {

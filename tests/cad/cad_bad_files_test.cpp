@@ -114,5 +114,40 @@ TEST(CadBadFiles, ASurfaceFarFromItsEdgesIsStoppedWhileThePartIsPrepared) {
   EXPECT_LT(seconds, 30.0);
 }
 
+TEST(CadBadFiles, ASurfaceFarFromItsEdgesIsRefusedWhenItsThicknessIsMeasured) {
+  // Another control point of the same surface moved to x = 2^32 - 1: the
+  // tessellation ends in time, but every ray of the default sizes' thickness
+  // measurement took OpenCASCADE's slow intersection path (minutes).
+  RDMESH_REQUIRE_SHARED_DATA(part, "step/gmsh_periodic_u_cst.step");
+  std::ifstream in(part, std::ios::binary);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string point = "(-14.1209762155347,-20.631921022652,25.1300741338336)";
+  const std::size_t at = text.find(point);
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, point.size(), "(4294967295,-20.631921022652,25.1300741338336)");
+  const ScratchDir inputs;
+  const std::string mutant = inputs.write("mutant.step", text);
+  CadOptions options;
+  options.isolate = false;
+  const auto oracle = load_cad_file(mutant, options);
+  const auto start = std::chrono::steady_clock::now();
+  bool refused = false;
+  for (const PatchInfo& p : oracle->patches()) {
+    try {
+      oracle->curved_thickness(p.id);
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("measuring the material behind it took over 10 s"),
+                std::string::npos)
+          << e.what();
+      refused = true;
+      break;
+    }
+  }
+  EXPECT_TRUE(refused);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_LT(seconds, 40.0);
+}
+
 }  // namespace
 }  // namespace rdmesh::test

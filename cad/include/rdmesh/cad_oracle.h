@@ -161,8 +161,10 @@ class CadOracle final : public DomainOracle {
   /// most the material's thickness (a rod, a pin; not a hole, not a thin
   /// shell), that thickness: from each of the face's initial points, the
   /// distance along the surface normal to the next face on a side that is
-  /// inside a solid (a rod's diameter); the largest over the points. nullopt for planar faces and where no such
-  /// crossing is found (cad_thickness.cpp).
+  /// inside a solid (a rod's diameter); the largest over the points. nullopt for planar faces and
+  /// where no such crossing is found (cad_thickness.cpp). Throws InputError when the rays of one
+  /// face take over 10 s (microseconds on a valid face; a corrupt surface far from its edges sends
+  /// them down OpenCASCADE's slow paths).
   std::optional<double> curved_thickness(PatchId id) const;
   /// The box of patch `id`'s face (OpenCASCADE's, with the model's tolerance).
   Box3 patch_box(PatchId id) const;
