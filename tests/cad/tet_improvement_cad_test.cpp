@@ -93,7 +93,8 @@ TEST_P(TetImprovementCad, KeepsTheBoundaryAndVolumesAndReachesTheTarget) {
 
 INSTANTIATE_TEST_SUITE_P(Shared, TetImprovementCad,
                          ::testing::Values(Part{"gmsh_Zylkopf.stp", 10},
-                                           Part{"gmsh_Kurbelwelle.stp", 10},
+                                           Part{"occt_screw.step", 10},
+                                           Part{"occtsample_MBBGehauseRohteil.step", 10},
                                            Part{"gmsh_wrenchnut.stp", 10}),
                          [](const auto& info) { return test::file_test_name(info.param.file); });
 
