@@ -75,7 +75,7 @@ struct PatchSampler {
   const DomainOracle& oracle;
   const Criteria& criteria;
   PatchId patch;
-  double slope, min_size;
+  double slope, min_size, per_turn;
   Sizer& sizer;
   detail::Pieces& pieces;
   std::vector<double>& sizes;
@@ -102,10 +102,13 @@ struct PatchSampler {
     pieces.points.insert(pieces.points.end(), {a, b, c});
     const int n = static_cast<int>(pieces.points.size());
     pieces.items.push_back({n - 3, n - 2, n - 1});
-    // The piece is a chord of the first mesh, up to its facet distance from
-    // the patch: lowered by what grading adds over that distance, the size
-    // holds on the patch itself.
-    sizes.push_back(std::max(min_size, lo - slope * criteria.facet_distance(g)));
+    // The piece is a chord of the first mesh, off the patch by its sag: at
+    // most the facet distance, and longest^2 / (8 R) on a radius R >= the
+    // one lo stands for. Lowered by what grading adds over that distance, the
+    // size holds on the patch itself.
+    const double radius = lo * per_turn / M_PI;
+    const double sag = std::min(criteria.facet_distance(g), longest * longest / (8 * radius));
+    sizes.push_back(std::max(min_size, lo - slope * sag));
   }
 };
 
@@ -132,7 +135,8 @@ CurvatureStats detail::add_curvature_pieces(const DomainOracle& oracle, const Te
     const PatchId patch = surface.triangle_patch[f];
     if (patch.value <= 0 || patch.value >= patches) continue;
     sampled[static_cast<std::size_t>(patch.value)] = true;
-    PatchSampler s{oracle, criteria, patch, field.slope(), min_size, sizer, pieces, sizes};
+    PatchSampler s{oracle,   criteria, patch,  field.slope(), min_size,
+                   per_turn, sizer,    pieces, sizes};
     double h[3];
     for (int k = 0; k < 3; ++k) {
       const int v = surface.triangles[f][k];

@@ -17,8 +17,9 @@
 // its sizes differ by more than 25% and it is longer than twice the smallest
 // (5 levels at most); a patch without triangles is sampled at its initial
 // points. Each segment or triangle takes the smallest size of its samples
-// (a triangle, a chord up to the facet distance d off the patch, minus
-// (grade - 1) d, so that the size holds on the patch), and those whose size
+// (a triangle, a chord off the patch by its sag d, at most the facet distance
+// and L^2 / 8R for its longest edge L, minus (grade - 1) d, so that the size
+// holds on the patch), and those whose size
 // is not below the base size there are dropped. The
 // sizes grow by grade - 1 per unit of distance from the pieces, as entity
 // sizes do, and lower the edge, facet and cell sizes by a minimum.
