@@ -108,7 +108,10 @@ struct PatchSampler {
     // size holds on the patch itself.
     const double radius = lo * per_turn / M_PI;
     const double sag = std::min(criteria.facet_distance(g), longest * longest / (8 * radius));
-    sizes.push_back(std::max(min_size, lo - slope * sag));
+    // At most halved: a first mesh far coarser than the curvature (an explicit
+    // large --size) has chords whose sag exceeds the size itself; there the
+    // patch gets up to 2 x the size rather than the minimum size everywhere.
+    sizes.push_back(std::max({min_size, lo - slope * sag, 0.5 * lo}));
   }
 };
 
