@@ -15,9 +15,13 @@ packages=(
   python3-dev pybind11-dev python3-numpy python3-pytest python3-venv python3-setuptools
   python3-wheel
   # OpenCASCADE for cad/ (STEP/IGES need data-exchange, whose CMake config also
-  # wants the ocaf and visualization dev packages; TKernel links TBB).
+  # wants the ocaf and visualization dev packages; TKernel links TBB). The STEP
+  # names and colours (XCAF) pull in TKService, whose exported link interface
+  # names -lfontconfig: libocct-visualization-dev does not depend on its dev
+  # package, and a bare Debian root failed to link without it.
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
   libocct-data-exchange-dev libocct-ocaf-dev libocct-visualization-dev libtbb-dev
+  libfontconfig-dev
 )
 if [ "${1:-}" = "--fuzz" ]; then
   # Fuzzing only (scripts/fuzz.sh): clang 14 and its compiler runtime, which
