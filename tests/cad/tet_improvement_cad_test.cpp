@@ -26,16 +26,6 @@ struct Part {
   double target_deg;  ///< min(10, the smallest dihedral between faces, MANIFEST.md)
 };
 
-double min_dihedral_deg(const TetMesh& mesh) {
-  double worst = 180;
-  for (const auto& t : mesh.tets) {
-    const auto& v = mesh.vertices;
-    for (double a : dihedral_angles_deg(v[t[0]], v[t[1]], v[t[2]], v[t[3]]))
-      worst = std::min(worst, a);
-  }
-  return worst;
-}
-
 class TetImprovementCad : public ::testing::TestWithParam<Part> {};
 
 TEST_P(TetImprovementCad, KeepsTheBoundaryAndVolumesAndReachesTheTarget) {
@@ -77,8 +67,8 @@ TEST_P(TetImprovementCad, KeepsTheBoundaryAndVolumesAndReachesTheTarget) {
     const double v0 = test::volume(before, sub.id), v1 = test::volume(after, sub.id);
     EXPECT_NEAR(v1, v0, 1e-12 * v0) << sub.name;
   }
-  EXPECT_NEAR(s.min_dihedral_before_deg, min_dihedral_deg(before), 1e-9);
-  EXPECT_NEAR(s.min_dihedral_after_deg, min_dihedral_deg(after), 1e-9);
+  EXPECT_NEAR(s.min_dihedral_before_deg, test::min_dihedral_deg(before), 1e-9);
+  EXPECT_NEAR(s.min_dihedral_after_deg, test::min_dihedral_deg(after), 1e-9);
   EXPECT_GE(s.min_dihedral_after_deg, s.min_dihedral_before_deg);
   EXPECT_GE(s.min_dihedral_after_deg, part.target_deg);
   EXPECT_LE(s.tets_after, s.tets_before + s.tets_before / 5);

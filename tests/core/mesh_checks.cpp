@@ -124,4 +124,14 @@ double volume(const TetMesh& mesh, SubdomainId sub) {
   return total;
 }
 
+double min_dihedral_deg(const TetMesh& mesh) {
+  double worst = 180;
+  for (const auto& t : mesh.tets) {
+    const auto& v = mesh.vertices;
+    for (double a : dihedral_angles_deg(v[t[0]], v[t[1]], v[t[2]], v[t[3]]))
+      worst = std::min(worst, a);
+  }
+  return worst;
+}
+
 }  // namespace rdmesh::test

@@ -35,4 +35,7 @@ std::map<int, int> curve_degrees(const TetMesh& mesh, CurveId curve, std::size_t
 /// Total volume of the tets labelled `sub` (all labels when sub.value == 0).
 double volume(const TetMesh& mesh, SubdomainId sub = SubdomainId{0});
 
+/// The smallest dihedral angle of the tetrahedra, in degrees (180 for none).
+double min_dihedral_deg(const TetMesh& mesh);
+
 }  // namespace rdmesh::test

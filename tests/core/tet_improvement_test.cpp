@@ -24,16 +24,6 @@ namespace {
 
 using Face = std::array<int, 3>;
 
-double min_dihedral_deg(const TetMesh& mesh) {
-  double worst = 180;
-  for (const auto& t : mesh.tets) {
-    const auto& v = mesh.vertices;
-    for (double a : dihedral_angles_deg(v[t[0]], v[t[1]], v[t[2]], v[t[3]]))
-      worst = std::min(worst, a);
-  }
-  return worst;
-}
-
 /// Adds tetrahedron (a, b, c, d) positively oriented.
 void add_tet(TetMesh& mesh, std::array<int, 4> t, int label) {
   const auto& v = mesh.vertices;
@@ -90,8 +80,8 @@ void expect_same_boundary_and_regions(const TetMesh& before, const TetMesh& afte
   }
   EXPECT_TRUE(s.ran);
   EXPECT_GE(s.min_dihedral_after_deg, s.min_dihedral_before_deg);
-  EXPECT_NEAR(s.min_dihedral_before_deg, min_dihedral_deg(before), 1e-9);
-  EXPECT_NEAR(s.min_dihedral_after_deg, min_dihedral_deg(after), 1e-9);
+  EXPECT_NEAR(s.min_dihedral_before_deg, test::min_dihedral_deg(before), 1e-9);
+  EXPECT_NEAR(s.min_dihedral_after_deg, test::min_dihedral_deg(after), 1e-9);
   EXPECT_EQ(s.tets_before, before.tets.size());
   EXPECT_EQ(s.tets_after, after.tets.size());
   std::size_t counted = 0;
@@ -117,7 +107,7 @@ TetMesh warped_octahedron(double eps, int sliver = 1, int top = 1) {
 
 TEST(TetImprovement, FlipsAPlantedSliverBetweenBoundaryVertices) {
   const TetMesh before = warped_octahedron(0.02);
-  ASSERT_LT(min_dihedral_deg(before), 5.0);
+  ASSERT_LT(test::min_dihedral_deg(before), 5.0);
   TetMesh after = before;
   const TetImprovementStats s = improve_tets(after);
   expect_same_boundary_and_regions(before, after, s);
@@ -218,7 +208,7 @@ TEST(TetImprovement, MovesAFreeVertexOffAPlantedSliver) {
   const double h = dot(p - face[0], normal);
   before.vertices[v] = p - (h - std::copysign(0.03, h)) * normal;
   test::expect_positive_orientation(before);
-  ASSERT_LT(min_dihedral_deg(before), 6.0);
+  ASSERT_LT(test::min_dihedral_deg(before), 6.0);
   TetMesh after = before;
   const TetImprovementStats s = improve_tets(after);
   expect_same_boundary_and_regions(before, after, s);
@@ -242,7 +232,7 @@ TEST(TetImprovement, ShakenGridOfTwoSubdomainsKeepsBoundaryInterfaceAndVolumes) 
     before.vertices[v] = before.vertices[v] + Point3{0.6 * next(), 0.6 * next(), 0.6 * next()};
   }
   test::expect_positive_orientation(before);
-  const double start = min_dihedral_deg(before);
+  const double start = test::min_dihedral_deg(before);
   TetMesh after = before;
   const TetImprovementStats s = improve_tets(after);
   expect_same_boundary_and_regions(before, after, s);
