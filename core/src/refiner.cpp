@@ -103,7 +103,7 @@ void Refiner::insert_initial_points() {
       if (c->neighbor(i)->info().stamp > c->info().stamp) update_facet(c, i);
     }
     const double badness = cell_badness(c);
-    if (badness > 0) cell_queue_.push({badness, c->info().stamp, c, -1});
+    if (badness > 0) cell_queue_.push({badness, c, c->info().stamp, -1});
   }
   if (plan_) return;  // the balls are D|L already: no arc is ever refined
   for (std::size_t j = 0; j < curves_.size(); ++j) {
@@ -160,6 +160,7 @@ void Refiner::refine(bool stop_on_conflict) {
     }
   }
   if (options_.progress) report_progress();
+  if (cell_queue_.empty()) cell_queue_.release();  // its peak size is no longer needed
 }
 
 bool Refiner::refine_edge(int curve, CurveState::Arc a) {
@@ -306,7 +307,7 @@ Vertex_handle Refiner::insert_in_zone(const Weighted_point& p, const VertexInfo&
       }
     }
   }
-  for (const Cell_handle& z : zone_cells_) z->info().stamp = 0;  // entries become stale
+  for (const Cell_handle& z : zone_cells_) kill(z->info());  // entries become stale
   const Triangulation::Facet& f = zone_boundary_.front();
   const Vertex_handle v =
       tr_.insert_in_hole(p, zone_cells_.begin(), zone_cells_.end(), f.first, f.second);
@@ -332,7 +333,7 @@ void Refiner::after_insertion(Vertex_handle v) {
   }
   for (const Cell_handle& c : new_cells_) {
     const double badness = cell_badness(c);
-    if (badness > 0) cell_queue_.push({badness, c->info().stamp, c, -1});
+    if (badness > 0) cell_queue_.push({badness, c, c->info().stamp, -1});
   }
 }
 

@@ -12,19 +12,20 @@
 #pragma once
 
 #include <chrono>
-#include <optional>
 #include <cstdint>
+#include <optional>
 #include <queue>
 #include <string>
 #include <vector>
 
+#include "optimize/chain_edges.h"
+#include "protection.h"
 #include "rdmesh/criteria.h"
 #include "rdmesh/mesher.h"
 #include "rdmesh/oracle.h"
-#include "optimize/chain_edges.h"
-#include "protection.h"
 #include "restricted_curves.h"
 #include "triangulation_types.h"
+#include "worst_first_heap.h"
 
 namespace rdmesh::detail {
 
@@ -60,10 +61,10 @@ class Refiner {
   Triangulation& triangulation() { return tr_; }
 
  private:
-  struct QueueEntry {
+  struct QueueEntry {  // 24 bytes
     double priority;
-    std::uint32_t stamp;
     Cell_handle cell;
+    std::uint32_t stamp;
     int facet;  ///< facet index for the facet queue, -1 for cells
     bool operator<(const QueueEntry& o) const {
       // Worst first; ties broken by age so that runs are deterministic.
@@ -155,7 +156,14 @@ class Refiner {
   /// Inserts p in the hole found by find_conflict_zone; null if the guard refused it.
   Vertex_handle insert_in_zone(const Weighted_point& p, const VertexInfo& info);
   void after_insertion(Vertex_handle v);
-  bool stale(const QueueEntry& e) const { return e.cell->info().stamp != e.stamp; }
+  /// Whether the entry's cell was destroyed (read from live_, not from the
+  /// cell, whose memory is cold by the time most entries are popped).
+  bool stale(const QueueEntry& e) const { return !is_live(e.stamp); }
+  /// Gives c the next stamp and marks it live.
+  void stamp_new(CellInfo& c);
+  /// Marks a destroyed cell's stamp dead.
+  void kill(CellInfo& c);
+  bool is_live(std::uint32_t stamp) const { return (live_[stamp >> 6] >> (stamp & 63)) & 1; }
   void report_progress();
   /// Appends the edges of D|L and the corner vertices (after cells and facets).
   void extract_features(TetMesh& mesh);
@@ -181,7 +189,8 @@ class Refiner {
   std::uint64_t next_arc_order_ = 0;
   std::priority_queue<ArcEntry> arc_queue_;
   std::priority_queue<QueueEntry> facet_queue_;
-  std::priority_queue<QueueEntry> cell_queue_;
+  WorstFirstHeap<QueueEntry> cell_queue_;
+  std::vector<std::uint64_t> live_;  ///< bit s: the cell stamped s still exists
 
   std::vector<CurveState> curves_;                 ///< index = CurveId - 1
   std::vector<CornerInfo> corners_;                ///< index = CornerId - 1

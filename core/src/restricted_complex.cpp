@@ -15,9 +15,20 @@
 
 namespace rdmesh::detail {
 
+void Refiner::stamp_new(CellInfo& c) {
+  c.stamp = next_stamp_++;
+  if ((c.stamp >> 6) >= live_.size()) live_.resize(2 * live_.size() + 1024, 0);
+  live_[c.stamp >> 6] |= std::uint64_t{1} << (c.stamp & 63);
+}
+
+void Refiner::kill(CellInfo& c) {
+  live_[c.stamp >> 6] &= ~(std::uint64_t{1} << (c.stamp & 63));
+  c.stamp = 0;
+}
+
 void Refiner::init_cell(Cell_handle c, Cell_handle from) {
   CellInfo& info = c->info();
-  info.stamp = next_stamp_++;
+  stamp_new(info);
   info.facet_patch = {0, 0, 0, 0};
   info.crossing_facet = -1;
   if (tr_.is_infinite(c)) {
@@ -136,7 +147,7 @@ void Refiner::update_facet(Cell_handle c, int i) {
   n->info().surface_center[j] = hit->point;
 
   const double badness = facet_badness(c, i);
-  if (badness > 0) facet_queue_.push({badness, c->info().stamp, c, i});
+  if (badness > 0) facet_queue_.push({badness, c, c->info().stamp, i});
 }
 
 double Refiner::facet_badness(Cell_handle c, int i) const {
