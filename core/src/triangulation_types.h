@@ -12,6 +12,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 
 #include "rdmesh/geometry.h"
 
@@ -31,6 +32,37 @@ struct VertexInfo {
   double ball_weight = 0.0;  ///< squared radius of its protecting ball (0: none)
 };
 
+/// The centers of the surface Delaunay balls of a cell's four facets, stored
+/// out of line: only cells with a restricted facet (a few percent of them,
+/// along the surface) need them, and held inline they were 96 of a cell's 256
+/// bytes. Storage appears on the first write access and is freed with the cell.
+/// A read of a cell without storage sees the origin (facet_patch says which
+/// entries mean something).
+class SurfaceCenters {
+ public:
+  SurfaceCenters() = default;
+  SurfaceCenters(const SurfaceCenters& o)
+      : centers_(o.centers_ ? std::make_unique<std::array<Point3, 4>>(*o.centers_) : nullptr) {}
+  SurfaceCenters(SurfaceCenters&&) noexcept = default;
+  SurfaceCenters& operator=(const SurfaceCenters& o) {
+    if (this != &o) *this = SurfaceCenters(o);
+    return *this;
+  }
+  SurfaceCenters& operator=(SurfaceCenters&&) noexcept = default;
+
+  Point3& operator[](int i) {
+    if (!centers_) centers_ = std::make_unique<std::array<Point3, 4>>();
+    return (*centers_)[i];
+  }
+  const Point3& operator[](int i) const { return centers_ ? (*centers_)[i] : kNone; }
+  /// operator[] without creating storage, for reads through a non-const cell.
+  const Point3& get(int i) const { return (*this)[i]; }
+
+ private:
+  static inline const Point3 kNone{};
+  std::unique_ptr<std::array<Point3, 4>> centers_;
+};
+
 /// Per cell: its Delaunay ball, its label in D|O, and the restricted status
 /// of its four facets in D|S. A facet is seen from both incident cells and
 /// both copies are always written together (see Refiner::update_facet).
@@ -43,7 +75,7 @@ struct CellInfo {
   Point3 circumcenter;          ///< finite cells only
   double squared_radius = 0.0;  ///< finite cells only
   std::array<int, 4> facet_patch{};          ///< PatchId value of facet i, 0 = not restricted
-  std::array<Point3, 4> surface_center{};    ///< center of facet i's surface Delaunay ball
+  SurfaceCenters surface_center;             ///< center of facet i's surface Delaunay ball
   /// A crossing of facet `crossing_facet`'s dual edge found while labeling this
   /// cell from the neighbor with stamp `crossing_with` (held in facet_patch and
   /// surface_center until update_facet() takes it); -1: none.
