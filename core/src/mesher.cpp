@@ -68,10 +68,11 @@ void record_protection(const detail::ProtectionPlanner& planner, const detail::P
   for (const int j : below) stats.curves_below_min_size.push_back(CurveId(j + 1));
   for (const detail::BallRef& b : conflicts) {
     if (stats.protection_features.size() >= 20) break;
-    stats.protection_features.push_back(
-        (b.curve < 0 ? "corner " + std::to_string(b.corner + 1)
-                     : "curve " + std::to_string(b.curve + 1)) +
-        " reaches a patch it does not bound");
+    const std::string what = planner.name(b) + " reaches a patch it does not bound";
+    if (std::find(stats.protection_features.begin(), stats.protection_features.end(), what) ==
+        stats.protection_features.end()) {
+      stats.protection_features.push_back(what);
+    }
   }
 }
 

@@ -110,6 +110,12 @@ struct ProtectedCurve {
   const Curve* curve = nullptr;
 };
 
+/// Cuts radii (none grows) until no ball hides another in the regular
+/// triangulation of the weighted points (centre, radius^2): every centre lies
+/// in its own power cell, |c_i - c_j|^2 >= r_j^2 - r_i^2 for every pair.
+/// Returns whether it cut anything.
+bool cut_hidden_balls(const std::vector<Point3>& centers, std::vector<double>& radii);
+
 class ProtectionPlanner {
  public:
   static constexpr double kRadiusRatio = 0.6;
@@ -134,6 +140,8 @@ class ProtectionPlanner {
 
   /// Samples every curve and shrinks balls until (B1)-(B3) hold.
   ProtectionPlan plan();
+  /// How messages name ball b's feature: "corner N" or "curve NAME".
+  std::string name(const BallRef& b) const;
   /// Shrinks the given balls of the last plan by their factors (a refinement
   /// found them reaching into a patch their feature does not bound, or two
   /// unrelated ones overlapping where the surface bends) and plans again into `plan`;
@@ -190,7 +198,6 @@ class ProtectionPlanner {
   bool keep_off_patches();
   void resolve();
   ProtectionPlan result() const;
-  std::string name(const BallRef& b) const;
   std::size_t curve_index(const CurveData& d) const { return &d - curves_.data(); }
 
   std::vector<CurveData> curves_;

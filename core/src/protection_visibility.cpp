@@ -10,9 +10,9 @@
 // general fuse did not merge, curves shorter than the minimum size), the
 // unresolved pairs are cut to tiny balls, and a larger unrelated ball around
 // them (a corner's) would hide them. Cutting the larger ball to
-// sqrt(|p - q|^2 + w_p) restores the inequality; a cut can expose the cut ball
-// to a still larger one, so the pass repeats until nothing changes. Radii only
-// decrease, so it ends.
+// sqrt(|p - q|^2 + w_p), but never below the smaller one, restores the
+// inequality; a cut can expose the cut ball to a still larger one, so the pass
+// repeats until nothing changes (see cut_hidden_balls for why it ends).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -29,7 +29,6 @@ namespace {
 struct VisibleBall {
   Point3 center;
   double radius;
-  BallRef ref;
 };
 
 /// Calls visit(i, j) for every pair of balls whose centres are closer than
@@ -81,36 +80,62 @@ void for_each_covering_pair(const std::vector<VisibleBall>& balls, Visit&& visit
 
 }  // namespace
 
-void ProtectionPlanner::keep_all_visible() {
-  for (int round = 0; round < 100; ++round) {
-    std::vector<VisibleBall> balls;
-    for (std::size_t q = 0; q < corners_.size(); ++q) {
-      balls.push_back({corners_[q].point, corner_radius_[q], BallRef{-1, 0, static_cast<int>(q)}});
-    }
-    for (std::size_t j = 0; j < curves_.size(); ++j) {
-      const std::vector<BallSample>& s = curves_[j].samples;
-      const std::size_t first = curves_[j].c.info.closed ? 0 : 1;
-      for (std::size_t i = first; i + 1 < s.size(); ++i) {
-        balls.push_back({s[i].point, s[i].radius, BallRef{static_cast<int>(j), static_cast<int>(i)}});
-      }
-    }
-    if (balls.size() < 2) return;
-    // The cuts of one round, applied after it (each ball to its smallest cut).
+bool cut_hidden_balls(const std::vector<Point3>& centers, std::vector<double>& radii) {
+  // First with a margin, each round to the smallest cut it asks of a ball; if
+  // that has not settled after kGentleRounds (a long chain of balls, each
+  // exposed by the cut of the next), cutting exactly to the smaller radius
+  // settles for sure: radii then only take values among the initial ones and
+  // every round lowers one, so at most n^2 rounds follow.
+  constexpr int kGentleRounds = 100;
+  if (centers.size() < 2) return false;
+  std::vector<VisibleBall> balls(centers.size());
+  bool any = false;
+  for (int round = 0;; ++round) {
+    for (std::size_t k = 0; k < centers.size(); ++k) balls[k] = {centers[k], radii[k]};
     std::vector<double> cut(balls.size(), std::numeric_limits<double>::infinity());
     bool changed = false;
     for_each_covering_pair(balls, [&](int big, int small) {
       const double d = distance(balls[big].center, balls[small].center);
       const double rb = balls[big].radius, rs = balls[small].radius;
       if (d * d >= 1.001 * (rb * rb - rs * rs)) return;
-      // Coincident centres cannot be separated by cutting: equal balls make
-      // one vertex, which both features share (see insert_protecting_balls).
-      cut[big] = std::min(cut[big], d == 0 ? rs : std::sqrt(0.99 * (d * d + rs * rs)));
+      // Never below the smaller radius: equal balls hide neither (coincident
+      // centres make one vertex, which both features share; see
+      // insert_protecting_balls), whereas a cut below it would make the small
+      // ball the larger one, and nearly concentric balls would then take
+      // turns cutting each other, round after round.
+      const double gentle = std::max(rs, std::sqrt(0.99 * (d * d + rs * rs)));
+      cut[big] = std::min(cut[big], round < kGentleRounds ? gentle : rs);
       changed = true;
     });
-    if (!changed) return;
-    for (std::size_t k = 0; k < balls.size(); ++k) {
-      if (cut[k] < balls[k].radius) clamp_radius(balls[k].ref, cut[k]);
+    if (!changed) return any;
+    any = true;
+    for (std::size_t k = 0; k < balls.size(); ++k) radii[k] = std::min(radii[k], cut[k]);
+  }
+}
+
+void ProtectionPlanner::keep_all_visible() {
+  std::vector<Point3> centers;
+  std::vector<double> radii;
+  std::vector<BallRef> refs;
+  for (std::size_t q = 0; q < corners_.size(); ++q) {
+    centers.push_back(corners_[q].point);
+    radii.push_back(corner_radius_[q]);
+    refs.push_back(BallRef{-1, 0, static_cast<int>(q)});
+  }
+  for (std::size_t j = 0; j < curves_.size(); ++j) {
+    const std::vector<BallSample>& s = curves_[j].samples;
+    const std::size_t first = curves_[j].c.info.closed ? 0 : 1;
+    for (std::size_t i = first; i + 1 < s.size(); ++i) {
+      centers.push_back(s[i].point);
+      radii.push_back(s[i].radius);
+      refs.push_back(BallRef{static_cast<int>(j), static_cast<int>(i)});
     }
+  }
+  // Each ball once (a corner's copies at its curves' ends and a closed
+  // curve's repeated sample follow it in clamp_radius).
+  cut_hidden_balls(centers, radii);
+  for (std::size_t k = 0; k < refs.size(); ++k) {
+    if (radii[k] < radius_of(refs[k])) clamp_radius(refs[k], radii[k]);
   }
 }
 

@@ -382,5 +382,50 @@ TEST(Protection, NoBallHidesAnotherWhereFeaturesNearlyCoincide) {
   expect_no_ball_hidden(l, plan);
 }
 
+/// Whether some ball's centre lies outside its own power cell.
+bool some_ball_hidden(const std::vector<Point3>& c, const std::vector<double>& r) {
+  for (std::size_t a = 0; a < c.size(); ++a) {
+    for (std::size_t b = 0; b < c.size(); ++b) {
+      if (a != b && squared_norm(c[a] - c[b]) < r[b] * r[b] - r[a] * r[a]) return true;
+    }
+  }
+  return false;
+}
+
+TEST(Protection, NearlyConcentricBallsAreCutUntilNeitherHidesTheOther) {
+  // Two consecutive balls of one curve 1.7e-13 apart, where a malformed STEP
+  // file's curve turned back on itself (exit 3, "protecting balls hide one
+  // another"): cutting the larger below the smaller only swapped their roles,
+  // round after round, until the pass gave up with one of them still hidden.
+  std::vector<Point3> centers{{-15.000000000001842, 38.877384482355914, -2.3229570004268978},
+                              {-15.000000000001842, 38.877384482355936, -2.3229570004267255}};
+  std::vector<double> radii{0.0015365349206149697, 0.0015288329426875124};
+  EXPECT_TRUE(cut_hidden_balls(centers, radii));
+  EXPECT_FALSE(some_ball_hidden(centers, radii));
+  EXPECT_GE(std::min(radii[0], radii[1]), 0.0015288329426875124) << "cut below the smaller ball";
+
+  // Clusters of nearly concentric balls of random radii, and balls nested in
+  // larger ones: every ball ends visible, and none grows.
+  std::uint64_t state = 777;
+  auto next = [&state] {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<double>(state >> 11) / static_cast<double>(1ULL << 53);
+  };
+  for (int trial = 0; trial < 20; ++trial) {
+    std::vector<Point3> c;
+    std::vector<double> r;
+    for (int k = 0; k < 40; ++k) {
+      const double spread = trial % 2 == 0 ? 1e-12 : 1e-3;
+      c.push_back({next() * spread, next() * spread, next() * spread});
+      r.push_back(1e-3 + next() * 1e-2);
+    }
+    const std::vector<double> before = r;
+    cut_hidden_balls(c, r);
+    EXPECT_FALSE(some_ball_hidden(c, r)) << "trial " << trial;
+    for (std::size_t k = 0; k < r.size(); ++k) EXPECT_LE(r[k], before[k]);
+    EXPECT_GT(*std::min_element(r.begin(), r.end()), 0);
+  }
+}
+
 }  // namespace
 }  // namespace rdmesh::detail
