@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <set>
 
 #include "cad_model.h"
@@ -42,6 +43,11 @@ Box3 box_of(const TopoDS_Shape& s, double margin) {
   b.Get(x0, y0, z0, x1, y1, z1);
   return {{x0 - margin, y0 - margin, z0 - margin}, {x1 + margin, y1 + margin, z1 + margin}};
 }
+
+/// Shapes closer than this fraction of the solids' bounding-box diagonal are
+/// fused as touching: 1/100 of the default minimum size (1e-4 of the diagonal),
+/// so nothing the mesh could show is merged.
+constexpr double kFuzzyPerDiagonal = 1e-6;
 
 // Solids in file order with their subdomain ids, after the general fuse.
 void fuse_solids(const ReadShape& read, CadOracle::Model& m, const std::string& source) {
@@ -88,13 +94,38 @@ void fuse_solids(const ReadShape& read, CadOracle::Model& m, const std::string& 
     m.face_styles = read.face_styles;
     return;
   }
-  BOPAlgo_Builder builder;
+  // Parts of an assembly placed a hair's breadth apart or into each other
+  // (occtdata_as1_motor: cylinders and planes 0.01 apart in a 300,000-unit
+  // model; occt_Axis_of_bearing: balls touching their races) make the exact
+  // fuse cut faces a hair's breadth wide along whole circles. No mesh at the
+  // model's scale can follow such a face: protection and refinement spent
+  // minutes on it. Within kFuzzyPerDiagonal of the model's size shapes are
+  // taken as touching (BOPAlgo's fuzzy value), as the designer meant; where
+  // the fuzzy fuse fails, the exact one is used.
+  Bnd_Box solids_box;
   for (std::size_t i = 0; i < input.size(); ++i) {
-    if (!empty[i]) builder.AddArgument(input[i]);
+    if (!empty[i]) BRepBndLib::Add(input[i], solids_box);
   }
-  builder.SetRunParallel(false);
-  builder.SetNonDestructive(true);
-  builder.Perform();
+  const double fuzzy =
+      solids_box.IsVoid() ? 0.0 : kFuzzyPerDiagonal * std::sqrt(solids_box.SquareExtent());
+  auto fuse = [&](double fuzzy_value) {
+    auto b = std::make_unique<BOPAlgo_Builder>();
+    for (std::size_t i = 0; i < input.size(); ++i) {
+      if (!empty[i]) b->AddArgument(input[i]);
+    }
+    b->SetRunParallel(false);
+    b->SetNonDestructive(true);
+    if (fuzzy_value > 0) b->SetFuzzyValue(fuzzy_value);
+    b->Perform();
+    return b;
+  };
+  std::unique_ptr<BOPAlgo_Builder> fused = fuse(fuzzy);
+  if (fused->HasErrors() && fuzzy > 0) {
+    m.log.push_back("the general fuse with a fuzzy value of " + std::to_string(fuzzy) +
+                    " failed: fused exactly");
+    fused = fuse(0);
+  }
+  BOPAlgo_Builder& builder = *fused;
   if (builder.HasErrors()) {
     throw InputError(source, "the general fuse of the " + std::to_string(input.size()) +
                                  " solids failed (BOPAlgo_Builder); try --heal");

@@ -76,6 +76,31 @@ TEST(CadFidelity, ASlenderPartMeshesWithinTheCheckAtTheDefaults) {
   EXPECT_LT(f["volumes"][0]["tolerance"].get<double>(), 0.1 * model);
 }
 
+TEST(CadFidelity, AnAssemblyWithPartsAHairApartMeshesWithinTheCheckAtTheDefaults) {
+  // occtdata_as1_motor.step: 35 solids, parts placed 0.01 apart in a
+  // 300,000-unit model. The exact fuse cut faces 0.01 wide along whole circles
+  // and the run was still refining after 150 s with 1.77M vertices; fused as
+  // touching, it meshes in about 20 s.
+  RDMESH_REQUIRE_SHARED_DATA(step, "step/occtdata_as1_motor.step");
+  ScratchDir dir;
+  const CliRun run = run_cli("'" + step + "' -o motor.mesh -q --report r.json", dir.path());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const nlohmann::json j = read_json(dir.file("r.json"));
+  const nlohmann::json& f = j["fidelity"];
+  EXPECT_TRUE(f["passed"].get<bool>());
+  ASSERT_EQ(f["volumes"].size(), 35u);
+  int meshed = 0;
+  for (const nlohmann::json& v : f["volumes"]) {
+    const double model = v["model"], mesh = v["mesh"];
+    EXPECT_LE(std::fabs(mesh - model), v["tolerance"].get<double>()) << v["name"];
+    if (model > 0) ++meshed;
+  }
+  EXPECT_EQ(meshed, 17);  // the other 18 lie inside earlier solids
+  // BRepGProp's volume of a part that touches no other.
+  EXPECT_NEAR(f["volumes"][2]["model"].get<double>(), 5.424e13, 1e-9 * 5.424e13);
+  EXPECT_LT(j["tets"].get<double>(), 1e6);
+}
+
 TEST(CadFidelity, AMeshThatLosesPartOfTheModelIsExitFourWithoutOutput) {
   // The same rod at a size of 500 mm, asked for: no cell inside the rod, 72% of
   // the volume lost (as every run did at 356f17e).
