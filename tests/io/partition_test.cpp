@@ -71,8 +71,11 @@ TEST(Partition, EveryTetInOnePartitionBalancedCutCounted) {
     }
     EXPECT_EQ(s.dual_edges, shared);
     EXPECT_EQ(s.edge_cut, cut);
-    if (parts == 1) EXPECT_EQ(cut, 0u);
-    if (parts > 1) EXPECT_GT(cut, 0u);
+    if (parts == 1) {
+      EXPECT_EQ(cut, 0u);
+    } else {
+      EXPECT_GT(cut, 0u);
+    }
     // Each triangle is a face of a tetrahedron of its partition, the smallest one.
     ASSERT_EQ(m.triangle_partition.size(), m.triangles.size());
     for (std::size_t f = 0; f < m.triangles.size(); ++f) {

@@ -117,9 +117,10 @@ void check_curve(const DomainOracle& o, const CurveInfo& info, std::mt19937& rng
     for (PatchId id : info.patches) {
       const PatchInfo* p = find_patch(patches, id);
       EXPECT_NE(p, nullptr) << "patch " << id.value << " is not listed";
-      if (p)
+      if (p) {
         EXPECT_TRUE(has_sides(labels, *p))
             << "curve point " << str(c.point(t)) << " not on " << p->name;
+      }
     }
   }
   // Length: additive, positive, inverted by parameter_at_length.
@@ -168,7 +169,9 @@ void check_corner_patches(const DomainOracle& o, const CornerInfo& q) {
   for (PatchId id : q.patches) {
     const PatchInfo* p = find_patch(patches, id);
     EXPECT_NE(p, nullptr) << "corner " << q.id.value << " patch " << id.value << " not listed";
-    if (p) EXPECT_TRUE(has_sides(labels, *p)) << "corner " << str(q.point) << " not on " << p->name;
+    if (p) {
+      EXPECT_TRUE(has_sides(labels, *p)) << "corner " << str(q.point) << " not on " << p->name;
+    }
   }
   EXPECT_FALSE(q.patches.empty()) << "corner " << q.id.value;
 }

@@ -141,10 +141,12 @@ TEST(ImplicitOracle, PatchSmallerThanACellStillGetsThreePoints) {
   // Two barely overlapping balls: the interface (a cap of the first sphere inside
   // the second, radius ~0.07) meets a single edge of the 0.1-spaced grid.
   const Point3 c1{-0.5, 0.003, -0.002}, c2{0.49, 0.003, -0.002};
+  ImplicitOracleOptions coarse;
+  coarse.sampling_resolution = 24;
   const ImplicitOracle o(cube(1.2),
                          {[&](const Point3& p) { return sphere(p, c1, 0.5); },
                           [&](const Point3& p) { return sphere(p, c2, 0.5); }},
-                         {{"left", {0}, {}}, {"right", {1}, {}}}, {}, {.sampling_resolution = 24});
+                         {{"left", {0}, {}}, {"right", {1}, {}}}, {}, coarse);
   const PatchId interface = o.patch_between(SubdomainId(1), SubdomainId(2));
   const std::vector<Point3> points = o.initial_points(interface);
   EXPECT_GE(points.size(), 3u);
