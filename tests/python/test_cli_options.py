@@ -6,6 +6,7 @@ import os
 import pathlib
 import subprocess
 
+import numpy as np
 import pytest
 
 import rdmesh
@@ -132,3 +133,27 @@ def test_one_version_everywhere():
     root = pathlib.Path(__file__).resolve().parents[2]
     project = tomllib.loads((root / "pyproject.toml").read_text())["project"]
     assert project["version"] == rdmesh.__version__ == cli_version()
+
+
+def test_curvature_sizes_as_the_cli(tmp_path):
+    # Torus of minor radius 0.3: its largest principal curvature is 1 / 0.3, so with 24
+    # elements per turn no boundary edge should be longer than 2 pi 0.3 / 24 (the README's
+    # bound; a few percent over it where the sizes meet), far below what --size 0.3 and the
+    # sample's facet distance give alone.
+    sample = SAMPLES / "torus.json"
+    subprocess.run([cli(), sample, "-q", "--size", "0.3", "--curvature", "24",
+                    "-o", tmp_path / "cli.mesh"], check=True)
+    m = rdmesh.mesh(sample, size=0.3, curvature=24, output=tmp_path / "py.mesh")
+    assert (tmp_path / "py.mesh").read_bytes() == (tmp_path / "cli.mesh").read_bytes()
+
+    def longest_boundary_edge(mesh):
+        p = np.asarray(mesh.points)
+        t = np.asarray(mesh.triangles)
+        return max(np.linalg.norm(p[t[:, i]] - p[t[:, (i + 1) % 3]], axis=1).max()
+                   for i in range(3))
+
+    bound = 2 * np.pi * 0.3 / 24
+    assert longest_boundary_edge(m) <= 1.1 * bound
+    reported = m.report["curvature_sizes"]
+    assert reported["facet_max_ratio"] == pytest.approx(longest_boundary_edge(m) / bound, rel=0.05)
+    assert longest_boundary_edge(rdmesh.mesh(sample, size=0.3)) > 2 * bound
