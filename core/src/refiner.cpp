@@ -281,7 +281,8 @@ bool Refiner::find_conflict_zone(const Weighted_point& p, Cell_handle start) {
   zone_boundary_.clear();
   zone_feature_vertices_.clear();
   tr_.find_conflicts(p, start, std::back_inserter(zone_boundary_), std::back_inserter(zone_cells_));
-  if (plan_) return !zone_cells_.empty();  // no arc to check for encroachment
+  // No arc to check for encroachment: protecting balls, or no curve at all.
+  if (plan_ || curves_.empty()) return !zone_cells_.empty();
   for (const Cell_handle& z : zone_cells_) {
     for (int k = 0; k < 4; ++k) {
       const Vertex_handle v = z->vertex(k);
