@@ -177,6 +177,9 @@ MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& given,
   result.stats.seconds_initial = initial;
   result.stats.seconds_refine = refine;
   result.stats.seconds_extract = seconds_since(t);
+  // The triangulation is no longer needed: free it before the improvement,
+  // which builds its own structures over the extracted mesh (peak memory).
+  refiner.reset();
   // A run stopped by its time limit reports what it reached, even nothing.
   if (result.stats.time_limit_reached) return result;
   check_output(oracle, options.surface_only, result);
