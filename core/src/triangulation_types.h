@@ -84,12 +84,26 @@ struct CellInfo {
 };
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+
+/// Regular_triangulation_cell_base_3's container of hidden points. The refiner
+/// discards hidden points (Discard_hidden_points only ever asks this container
+/// for its end(), an empty range), so instead of CGAL's default std::list, 24
+/// bytes constructed and destroyed with every cell, an empty range of none.
+struct NoHiddenPoints {
+  using iterator = Kernel::Weighted_point_3*;
+  using const_iterator = const Kernel::Weighted_point_3*;
+  iterator begin() { return nullptr; }
+  iterator end() { return nullptr; }
+  const_iterator begin() const { return nullptr; }
+  const_iterator end() const { return nullptr; }
+};
+
 using Vb = CGAL::Triangulation_vertex_base_with_info_3<VertexInfo, Kernel,
                                                         CGAL::Regular_triangulation_vertex_base_3<Kernel>>;
 using Cb = CGAL::Triangulation_cell_base_with_info_3<
     CellInfo, Kernel,
     CGAL::Regular_triangulation_cell_base_3<Kernel, CGAL::Triangulation_cell_base_3<Kernel>,
-                                            CGAL::Discard_hidden_points>>;
+                                            CGAL::Discard_hidden_points, NoHiddenPoints>>;
 using Tds = CGAL::Triangulation_data_structure_3<Vb, Cb, CGAL::Sequential_tag>;
 using Triangulation = CGAL::Regular_triangulation_3<Kernel, Tds>;
 using Cell_handle = Triangulation::Cell_handle;
