@@ -101,6 +101,21 @@ TEST(CadFidelity, AnAssemblyWithPartsAHairApartMeshesWithinTheCheckAtTheDefaults
   EXPECT_LT(j["tets"].get<double>(), 1e6);
 }
 
+TEST(CadFidelity, InAnAssemblyTheMinimumSizeFollowsTheThinnestPart) {
+  // occt_Axis_of_bearing.brep: balls of radius 2 on their races in a model
+  // 147 long. The gap around each contact thins out to nothing and refinement
+  // follows it down to the minimum size: at 1e-4 of the diagonal (0.0147),
+  // 1.2M tetrahedra in 90 s. The minimum size is 1/50 of the thinnest part's
+  // thickness 2V/A (a ball's: 2r/3), as for a single part thinner than that.
+  RDMESH_REQUIRE_SHARED_DATA(brep, "brep/occt_Axis_of_bearing.brep");
+  ScratchDir dir;
+  const CliRun run =
+      run_cli("'" + brep + "' -o b.mesh -q --time-limit 0.01 --report r.json", dir.path());
+  EXPECT_EQ(run.exit_code, 4) << run.output;  // stopped: only the criteria are looked at
+  const nlohmann::json j = read_json(dir.file("r.json"));
+  EXPECT_NEAR(j["criteria"]["min_size"].get<double>(), 2.0 * 2 / 3 / 50, 1e-6);
+}
+
 TEST(CadFidelity, AMeshThatLosesPartOfTheModelIsExitFourWithoutOutput) {
   // The same rod at a size of 500 mm, asked for: no cell inside the rod, 72% of
   // the volume lost (as every run did at 356f17e).
