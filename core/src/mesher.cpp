@@ -95,6 +95,10 @@ MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& given,
     throw InputError("the time limit must be a number of seconds >= 0 (0: none), got " +
                      short_number(options.time_limit_seconds));
   }
+  if (options.threads < 0) {
+    throw InputError("the number of threads must be >= 0 (0: all cores), got " +
+                     std::to_string(options.threads));
+  }
   const auto run_start = std::chrono::steady_clock::now();
   const auto deadline =
       options.time_limit_seconds > 0
@@ -161,8 +165,8 @@ MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& given,
   if (exudation.enabled && !options.surface_only) {
     announce(options, "exuding slivers");
     const detail::ChainEdges chains = refiner->chain_edges();
-    result.exudation =
-        detail::exude_slivers(refiner->triangulation(), criteria, exudation, &chains);
+    result.exudation = detail::exude_slivers(refiner->triangulation(), criteria, exudation, &chains,
+                                             options.threads);
   }
 
   t = std::chrono::steady_clock::now();
@@ -184,6 +188,7 @@ MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& given,
   if (result.stats.time_limit_reached) return result;
   check_output(oracle, options.surface_only, result);
   TetImprovementOptions improvement = options.improvement;
+  improvement.threads = options.threads;
   if (options.time_limit_seconds > 0) {
     // The improvement gets what is left of the run's time (nothing: it does not run).
     const double left = options.time_limit_seconds - seconds_since(run_start);

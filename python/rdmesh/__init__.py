@@ -13,7 +13,8 @@ Options are the command line's (rdmesh --help), with underscores: size,
 edge_size, facet_size, cell_size, facet_distance, facet_angle, radius_edge,
 min_size, max_elements, features ("protect" or "refine"), surface_only, heal,
 feature_angle, exude (default True; False is --no-exude), exude_time_limit,
-optimize (default True; False is --no-optimize),
+optimize (default True; False is --no-optimize), threads (0: all cores; the
+mesh is the same for any number),
 time_limit, keep_bad_mesh, check ("cheap" or "full"), order (1, or 2: 10-node
 tetrahedra), partitions (METIS), size_on ("face:12=0.5", or a list of them),
 sizes (a .json file), grade, curvature (elements per turn); and what the run writes,

@@ -25,6 +25,7 @@ const std::map<std::string, std::string>& accepted_values() {
       {"--exude-time-limit", "a number of seconds >= 0 (0: no limit)"},
       {"--time-limit", "a number of seconds >= 0 (0: no limit)"},
       {"--report", "a file name ending in .json"},
+      {"--threads", "a number of threads from 0 (all cores) to 1024"},
       {"--features", "protect or refine"},
       {"--feature-angle", "an angle in degrees in [0, 180]"},
       {"--check", "cheap or full"},

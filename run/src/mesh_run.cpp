@@ -18,6 +18,7 @@ MeshRun mesh_loaded(const Options& opt, const LoadedInput& input, const Criteria
   base.features = opt.features;
   base.surface_only = opt.surface_only;
   base.time_limit_seconds = opt.time_limit;
+  base.threads = opt.threads;
   run.result = generate_mesh(*input.oracle, criteria, base);
 
   // The cheap measures and the fidelity check: a mesh that does not match the
@@ -25,7 +26,7 @@ MeshRun mesh_loaded(const Options& opt, const LoadedInput& input, const Criteria
   const auto t = std::chrono::steady_clock::now();
   announce(base, "checking the mesh against the model");
   const bool full = opt.full_check || !opt.report.empty();
-  run.quality = measure_quality(run.result.mesh, full ? input.oracle.get() : nullptr);
+  run.quality = measure_quality(run.result.mesh, full ? input.oracle.get() : nullptr, opt.threads);
   if (const auto model = model_measures(*input.oracle, opt.surface_only)) {
     run.fidelity =
         check_fidelity(run.quality, *model, input.oracle->patches(), input.oracle->curves(),

@@ -20,6 +20,7 @@
 #include "rdmesh/errors.h"
 #include "rdmesh/input_file.h"
 #include "rdmesh/mesh_writers.h"
+#include "rdmesh/parallel_for.h"
 #include "rdmesh/sha256.h"
 #include "rdmesh/triangle_mesh_oracle.h"
 
@@ -94,6 +95,10 @@ void add_options(CLI::App& app, Options& opt) {
   app.add_flag("--no-optimize", opt.no_optimize,
                "Keep the restricted Delaunay tetrahedra: no final flips and vertex moves "
                "against the worst dihedral angles");
+  app.add_option("--threads", opt.threads,
+                 "Threads for the phases after refinement; the output is the same for any "
+                 "number (default 0: all cores)")
+      ->check(CLI::Range(0, 1024));
   app.add_option("--report", opt.report, "Write a JSON report of the run to this file");
   app.add_flag("-q,--quiet", opt.quiet, "No progress and no summary");
   app.add_flag("--heal", opt.heal,
@@ -348,6 +353,7 @@ nlohmann::json criteria_json(const Options& opt, const Criteria& criteria, const
       {"surface_only", opt.surface_only},
       {"exudation", !opt.no_exude && !opt.surface_only},
       {"exude_time_limit_s", opt.exude_time_limit},
+      {"threads", resolve_threads(opt.threads)},
       {"optimize", !opt.no_optimize && !opt.surface_only},
       {"time_limit_s", opt.time_limit},
       {"check", opt.full_check || !opt.report.empty() ? "full" : "cheap"}};

@@ -1,8 +1,10 @@
 // Output bytes depend on the input and the options only (issue 23 item 7): two runs
-// on the same input give the same mesh file, for each kind of input.
+// on the same input give the same mesh file, for each kind of input, and so do
+// runs with 1 and 2 threads (issue 19).
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 
@@ -43,6 +45,51 @@ TEST(CliDeterminism, TriangleMesh) {
 
 TEST(CliDeterminism, StepPart) {
   expect_same_bytes_twice(source_path("samples/plate_with_hole.step"), "");
+}
+
+/// Removes every "seconds" entry (the phases' timings) from a report.
+void drop_timings(nlohmann::json& j) {
+  if (!j.is_object() && !j.is_array()) return;
+  if (j.is_object()) j.erase("seconds");
+  for (nlohmann::json& child : j) drop_timings(child);
+}
+
+/// Meshes `input` with --threads 1 and --threads 2: the same mesh bytes and the
+/// same measured figures in the report (its timings aside).
+void expect_same_for_thread_counts(const std::string& input, const std::string& args) {
+  ScratchDir dir;
+  for (const char* threads : {"1", "2"}) {
+    const std::string name = std::string("t") + threads;
+    const CliRun run = run_cli("'" + input + "' -q " + args + " --threads " + threads + " -o " +
+                                   name + ".msh --report " + name + ".json",
+                               dir.path());
+    ASSERT_EQ(run.exit_code, 0) << run.output;
+  }
+  const std::string a = bytes_of(dir.file("t1.msh")), b = bytes_of(dir.file("t2.msh"));
+  // Above two chunks of the parallel loops (4096 items each), so that 2 threads share them.
+  nlohmann::json r1 = nlohmann::json::parse(bytes_of(dir.file("t1.json")));
+  nlohmann::json r2 = nlohmann::json::parse(bytes_of(dir.file("t2.json")));
+  EXPECT_GT(r1.at("tets").get<std::size_t>(), 3 * 4096u);
+  EXPECT_TRUE(a == b) << input << ": 1 and 2 threads wrote different bytes (" << a.size() << " and "
+                      << b.size() << ")";
+  EXPECT_GT(r1.at("optimization").at("min_dihedral_after_deg").get<double>(),
+            r1.at("exudation").at("min_dihedral_before_deg").get<double>());
+  for (nlohmann::json* r : {&r1, &r2}) {
+    drop_timings(*r);
+    r->erase("command_line");
+    r->erase("output");
+    r->at("criteria").erase("threads");
+  }
+  EXPECT_EQ(r1.dump(1), r2.dump(1));
+}
+
+TEST(CliThreads, ImplicitSphereSameBytesForOneAndTwoThreads) {
+  expect_same_for_thread_counts(source_path("samples/sphere.json"), "--size 0.1");
+}
+
+TEST(CliThreads, SharedStepSameBytesForOneAndTwoThreads) {
+  RDMESH_REQUIRE_SHARED_DATA(part, "step/gmsh_Zylkopf.stp");
+  expect_same_for_thread_counts(part, "");
 }
 
 }  // namespace

@@ -62,6 +62,9 @@ struct MeshOptions {
   /// (RefinementStats::time_limit_reached says so); exudation gets what is
   /// left of the time, if anything.
   double time_limit_seconds = 0;
+  /// Threads of the phases that use them (0: all cores). The output does not
+  /// depend on it: parallel work is split and combined by fixed rules.
+  int threads = 0;
 };
 
 /// What refinement did, for the report.

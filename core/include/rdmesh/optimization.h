@@ -93,6 +93,8 @@ struct TetImprovementOptions {
   /// Stop after this many seconds; 0 = no limit (the result is then no longer
   /// independent of the machine's speed).
   double time_limit_seconds = 0;
+  /// Threads for the measures over all tetrahedra (0: all cores); the result does not depend on it.
+  int threads = 1;
 };
 
 /// What the improvement did, for the report. Angles over all output tetrahedra.

@@ -12,6 +12,7 @@
 
 #include "rdmesh/errors.h"
 #include "rdmesh/number_text.h"
+#include "rdmesh/parallel_for.h"
 #include "tet_shape.h"
 #include "vertex_perturber.h"
 #include "weight_pump.h"
@@ -48,13 +49,26 @@ bool in_domain(const Triangulation& tr, Cell_handle c) {
   return c->info().label != 0 && !tr.is_infinite(c);
 }
 
-/// Minimum dihedral angle and histogram over the cells of D|O.
-void measure(const Triangulation& tr, double& min_deg, DihedralHistogram& histogram) {
+/// The finite cells in iteration order and the cosine of each domain cell
+/// (-infinity for the others), computed on `threads` threads.
+void domain_cosines(const Triangulation& tr, int threads, std::vector<Cell_handle>& cells,
+                    std::vector<double>& cosines) {
+  cells.clear();
+  cells.reserve(tr.number_of_finite_cells());
+  for (auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c) cells.push_back(c);
+  cosines.resize(cells.size());
+  parallel_for(cells.size(), threads, [&](std::size_t i) {
+    cosines[i] = cells[i]->info().label != 0 ? cell_cosine(cells[i])
+                                             : -std::numeric_limits<double>::infinity();
+  });
+}
+
+/// Minimum dihedral angle and histogram over the cells of D|O (`cosines` from domain_cosines).
+void measure(const std::vector<double>& cosines, double& min_deg, DihedralHistogram& histogram) {
   histogram.fill(0);
   double worst = -std::numeric_limits<double>::infinity();
-  for (auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c) {
-    if (c->info().label == 0) continue;
-    const double cosine = cell_cosine(c);
+  for (const double cosine : cosines) {
+    if (cosine == -std::numeric_limits<double>::infinity()) continue;
     worst = std::max(worst, cosine);
     add_to_histogram(histogram, cosine_to_degrees(cosine));
   }
@@ -70,8 +84,9 @@ struct QueuedVertex {
 class Exuder {
  public:
   Exuder(Triangulation& tr, const Criteria& criteria, const ExudationOptions& options,
-         const ChainEdges* chains)
+         const ChainEdges* chains, int threads)
       : tr_(tr),
+        threads_(threads),
         options_(options),
         chains_(chains),
         limits_{&criteria, options.keep_cell_size, options.keep_radius_edge},
@@ -81,15 +96,17 @@ class Exuder {
     start_ = std::chrono::steady_clock::now();
     ExudationStats stats;
     stats.ran = true;
-    measure(tr_, stats.min_dihedral_before_deg, stats.histogram_before);
     std::uint32_t next_stamp = prepare();
-    next_stamp = pump_passes(stats, next_stamp);
+    // One pass over the cells gives the figures before and the first queue.
+    domain_cosines(tr_, threads_, cells_, cosines_);
+    measure(cosines_, stats.min_dihedral_before_deg, stats.histogram_before);
+    next_stamp = pump_passes(stats, next_stamp, /*cosines_fresh=*/true);
     if (options_.perturb && !stats.time_limit_reached) {
       // Slivers the weights could not remove: move their volume vertices, then pump again.
       const double t = elapsed();
       VertexPerturber perturber(tr_, next_stamp);
       bound_cosine_ = std::cos(options_.perturb_bound_deg * M_PI / 180);
-      requeue();
+      requeue(false);
       process(
           [&](Vertex_handle v, int) -> const std::vector<Cell_handle>* {
             if (v->info().dim != FeatureDim::kVolume) return nullptr;
@@ -100,14 +117,18 @@ class Exuder {
           },
           stats.time_limit_reached);
       DihedralHistogram histogram;
-      measure(tr_, stats.min_dihedral_after_perturb_deg, histogram);
+      domain_cosines(tr_, threads_, cells_, cosines_);
+      measure(cosines_, stats.min_dihedral_after_perturb_deg, histogram);
       stats.perturb_seconds = elapsed() - t;
       if (!stats.time_limit_reached) {
         prepare();  // nearest neighbours moved
-        pump_passes(stats, perturber.next_stamp());
+        pump_passes(stats, perturber.next_stamp(), /*cosines_fresh=*/false);
       }
     }
-    measure(tr_, stats.min_dihedral_after_deg, stats.histogram_after);
+    domain_cosines(tr_, threads_, cells_, cosines_);
+    measure(cosines_, stats.min_dihedral_after_deg, stats.histogram_after);
+    cells_ = {};
+    cosines_ = {};
     stats.seconds = elapsed();
     return stats;
   }
@@ -115,12 +136,13 @@ class Exuder {
  private:
   /// Weight pumping in passes of rising sliver bound (the worst slivers first
   /// across the whole mesh, then the milder ones); returns the next free stamp.
-  std::uint32_t pump_passes(ExudationStats& stats, std::uint32_t next_stamp) {
+  /// `cosines_fresh`: cells_ and cosines_ are those of the current triangulation.
+  std::uint32_t pump_passes(ExudationStats& stats, std::uint32_t next_stamp, bool cosines_fresh) {
     WeightPump pump(tr_, next_stamp, limits_, chains_);
     const int passes = std::max(1, options_.passes);
     for (int pass = 1; pass <= passes && !stats.time_limit_reached; ++pass) {
       bound_cosine_ = std::cos(options_.sliver_bound_deg * pass / passes * M_PI / 180);
-      requeue();
+      requeue(cosines_fresh && pass == 1);
       process(
           [&](Vertex_handle v, int id) -> const std::vector<Cell_handle>* {
             ++stats.moves_tried;
@@ -215,21 +237,22 @@ class Exuder {
         }
       }
     }
-    requeue();
     return max_stamp + 1;
   }
 
-  /// Queues every vertex incident to a domain cell below the current bound.
-  void requeue() {
+  /// Queues every vertex incident to a domain cell below the current bound
+  /// (`cosines_fresh`: cells_ and cosines_ are up to date).
+  void requeue(bool cosines_fresh) {
+    if (!cosines_fresh) domain_cosines(tr_, threads_, cells_, cosines_);
     const std::size_t n = moves_.size();
     queue_ = {};
     dirty_.assign(n, 1);
     std::vector<double> worst(n, -std::numeric_limits<double>::infinity());
-    for (auto c = tr_.finite_cells_begin(); c != tr_.finite_cells_end(); ++c) {
-      if (c->info().label == 0) continue;
-      const double cosine = cell_cosine(c);
+    for (std::size_t i = 0; i < cells_.size(); ++i) {
+      const double cosine = cosines_[i];
+      if (!(cosine > bound_cosine_)) continue;
       for (int k = 0; k < 4; ++k) {
-        double& w = worst[c->vertex(k)->info().index];
+        double& w = worst[cells_[i]->vertex(k)->info().index];
         w = std::max(w, cosine);
       }
     }
@@ -250,6 +273,7 @@ class Exuder {
   }
 
   Triangulation& tr_;
+  int threads_;
   ExudationOptions options_;
   const ChainEdges* chains_;
   CellLimits limits_;
@@ -258,6 +282,8 @@ class Exuder {
   std::vector<int> moves_;    ///< accepted moves per vertex
   std::vector<char> dirty_;   ///< star changed since the vertex was last tried
   std::priority_queue<QueuedVertex> queue_;
+  std::vector<Cell_handle> cells_;  ///< finite cells, scratch of domain_cosines
+  std::vector<double> cosines_;
   std::chrono::steady_clock::time_point start_;
 };
 
@@ -282,11 +308,12 @@ void check_invariants(const Triangulation& tr) {
 }  // namespace
 
 ExudationStats exude_slivers(Triangulation& tr, const Criteria& criteria,
-                             const ExudationOptions& options, const ChainEdges* chains) {
+                             const ExudationOptions& options, const ChainEdges* chains,
+                             int threads) {
   validate(options);
   if (tr.dimension() < 3) return {};
   if (options.self_check) check_invariants(tr);
-  ExudationStats stats = Exuder(tr, criteria, options, chains).run();
+  ExudationStats stats = Exuder(tr, criteria, options, chains, threads).run();
   if (options.self_check) check_invariants(tr);
   return stats;
 }

@@ -38,8 +38,10 @@ namespace rdmesh::detail {
 /// Runs sliver exudation on `tr` (three-dimensional, labelled by refinement
 /// with `criteria`, whose cell rules new cells keep as the options ask).
 /// `chains`: the edges of D|L, which stay mesh edges (null: every edge joining
-/// two feature vertices stays).
+/// two feature vertices stays). `threads`: for the measures over all cells
+/// (the result does not depend on it; 0: all cores).
 ExudationStats exude_slivers(Triangulation& tr, const Criteria& criteria,
-                             const ExudationOptions& options, const ChainEdges* chains = nullptr);
+                             const ExudationOptions& options, const ChainEdges* chains = nullptr,
+                             int threads = 1);
 
 }  // namespace rdmesh::detail

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "rdmesh/errors.h"
+#include "rdmesh/parallel_for.h"
 #include "tet_flips.h"
 #include "tet_insertion.h"
 #include "tet_shape.h"
@@ -27,17 +28,27 @@ namespace {
 using detail::LocalChange;
 using detail::TetTopology;
 
-void measure(const TetMesh& mesh, double& min_deg, DihedralHistogram& histogram,
+/// The smallest angle and the histogram of the smallest dihedral angles `quality` (degrees).
+void measure(const std::vector<double>& quality, double& min_deg, DihedralHistogram& histogram,
              std::size_t& tets) {
-  min_deg = mesh.tets.empty() ? 0 : std::numeric_limits<double>::infinity();
+  min_deg = quality.empty() ? 0 : std::numeric_limits<double>::infinity();
   histogram.fill(0);
-  for (const auto& t : mesh.tets) {
-    const double q = detail::min_dihedral(mesh.vertices[t[0]], mesh.vertices[t[1]],
-                                          mesh.vertices[t[2]], mesh.vertices[t[3]]);
+  for (const double q : quality) {
     min_deg = std::min(min_deg, q);
     detail::add_to_histogram(histogram, q);
   }
-  tets = mesh.tets.size();
+  tets = quality.size();
+}
+
+/// The smallest dihedral angle of every tet of `mesh`, on `threads` threads.
+std::vector<double> tet_qualities(const TetMesh& mesh, int threads) {
+  std::vector<double> quality(mesh.tets.size());
+  parallel_for(mesh.tets.size(), threads, [&](std::size_t i) {
+    const auto& t = mesh.tets[i];
+    quality[i] = detail::min_dihedral(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]],
+                                      mesh.vertices[t[3]]);
+  });
+  return quality;
 }
 
 /// The best flip touching tetrahedron t; false when none improves.
@@ -69,12 +80,13 @@ TetImprovementStats improve_tets(TetMesh& mesh, const TetImprovementOptions& opt
   }
   // The smallest dihedral angle of a tetrahedron is at most arccos(1/3) = 70.53 degrees.
   if (!(options.bound_deg > 0 && options.bound_deg <= 70.5) || options.max_sweeps < 0 ||
-      !(options.max_insertions >= 0) || !std::isfinite(options.max_insertions) ||
-      !(options.time_limit_seconds >= 0) || !std::isfinite(options.time_limit_seconds)) {
+      options.threads < 0 || !(options.max_insertions >= 0) ||
+      !std::isfinite(options.max_insertions) || !(options.time_limit_seconds >= 0) ||
+      !std::isfinite(options.time_limit_seconds)) {
     throw InputError(
         "improvement options: the bound must be in (0, 70.5] degrees, the sweeps "
-        ">= 0, the insertions a fraction >= 0 and the time limit a number of "
-        "seconds >= 0");
+        ">= 0, the insertions a fraction >= 0, the time limit a number of "
+        "seconds >= 0 and the threads >= 0 (0: all cores)");
   }
   const auto start = std::chrono::steady_clock::now();
   const auto elapsed = [&] {
@@ -82,9 +94,13 @@ TetImprovementStats improve_tets(TetMesh& mesh, const TetImprovementOptions& opt
   };
   TetImprovementStats stats;
   stats.ran = true;
-  measure(mesh, stats.min_dihedral_before_deg, stats.histogram_before, stats.tets_before);
-
-  TetTopology topo(mesh);
+  TetTopology topo(mesh, options.threads);
+  {
+    // The tets' qualities before are the topology's: mesh.tets in order.
+    std::vector<double> quality(mesh.tets.size());
+    for (std::size_t t = 0; t < quality.size(); ++t) quality[t] = topo.quality(static_cast<int>(t));
+    measure(quality, stats.min_dihedral_before_deg, stats.histogram_before, stats.tets_before);
+  }
   const auto max_insertions =
       static_cast<std::size_t>(options.max_insertions * static_cast<double>(mesh.tets.size())) + 10;
   for (int sweep = 0; sweep < options.max_sweeps && !stats.time_limit_reached; ++sweep) {
@@ -135,7 +151,8 @@ TetImprovementStats improve_tets(TetMesh& mesh, const TetImprovementOptions& opt
     if (changes == 0) break;
   }
   topo.write_to(mesh);
-  measure(mesh, stats.min_dihedral_after_deg, stats.histogram_after, stats.tets_after);
+  measure(tet_qualities(mesh, options.threads), stats.min_dihedral_after_deg, stats.histogram_after,
+          stats.tets_after);
   stats.seconds = elapsed();
   return stats;
 }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "rdmesh/parallel_for.h"
 #include "tet_shape.h"
 
 namespace rdmesh::detail {
@@ -38,10 +39,21 @@ TetTopology::Key TetTopology::face_key(int a, int b, int c) {
   return k;
 }
 
-TetTopology::TetTopology(const TetMesh& mesh)
+TetTopology::TetTopology(const TetMesh& mesh, int threads)
     : points_(mesh.vertices), incident_(mesh.vertices.size()), fixed_(mesh.vertices.size(), 0) {
-  tets_.reserve(mesh.tets.size() + mesh.tets.size() / 8);
-  for (std::size_t t = 0; t < mesh.tets.size(); ++t) add(mesh.tets[t], mesh.tet_subdomain[t].value);
+  const std::size_t n = mesh.tets.size();
+  tets_.reserve(n + n / 8);
+  labels_.reserve(n + n / 8);
+  quality_.reserve(n + n / 8);
+  alive_.reserve(n + n / 8);
+  tets_.assign(mesh.tets.begin(), mesh.tets.end());
+  for (const SubdomainId& s : mesh.tet_subdomain) labels_.push_back(s.value);
+  alive_.assign(n, 1);
+  // The qualities, each a pure function of its tet, on `threads` threads.
+  quality_.resize(n);
+  parallel_for(n, threads, [&](std::size_t t) { quality_[t] = tet_quality(tets_[t]); });
+  for (std::size_t t = 0; t < n; ++t)
+    for (const int v : tets_[t]) incident_[v].push_back(static_cast<int>(t));
   for (const auto& f : mesh.triangles) {
     faces_.insert(face_key(f[0], f[1], f[2]));
     for (const auto& e : kTriangleEdges) edges_.insert(edge_key(f[e[0]], f[e[1]]));

@@ -30,7 +30,8 @@ bool even_order(const Tet& t, const Tet& order);
 class TetTopology {
  public:
   /// Copies the tetrahedra of `mesh`; its triangles, feature edges and corners are the constraints.
-  explicit TetTopology(const TetMesh& mesh);
+  /// `threads`: for the qualities of the tetrahedra (0: all cores).
+  explicit TetTopology(const TetMesh& mesh, int threads = 1);
 
   std::size_t size() const { return tets_.size(); }  ///< tetrahedra ever created
   bool alive(int t) const { return alive_[t]; }

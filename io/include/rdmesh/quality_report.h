@@ -83,9 +83,11 @@ struct QualityReport {
 /// neighbouring triangles of the same patch are projected once. Samples whose
 /// projection returns nullopt or throws OracleError are skipped and counted in
 /// `projection_failures`. With a null oracle no distance is measured (-1).
+/// `threads` (0: all cores) share the per-tet figures, which are the same for
+/// any thread count; the oracle is called from the calling thread only.
 /// @throws InternalError if `mesh` is inconsistent (index out of range, label
 ///         arrays of the wrong size).
-QualityReport measure_quality(const TetMesh& mesh, const DomainOracle* oracle);
+QualityReport measure_quality(const TetMesh& mesh, const DomainOracle* oracle, int threads = 1);
 
 /// The report as JSON. Keys are the field names of QualityReport,
 /// SubdomainStats, PatchStats and CurveStats; ids are plain integers; a non-finite value

@@ -1,0 +1,74 @@
+// Deterministic parallel loops. [0, n) is cut into chunks whose bounds depend
+// on n alone, never on the number of threads; each chunk is processed whole by
+// one thread and the caller combines per-chunk results in chunk order. A
+// result is then the same bits for any thread count, as long as the body of a
+// chunk only reads shared state and writes what belongs to its own items or
+// its own chunk.
+#pragma once
+
+#include <algorithm>
+#include <atomic>
+#include <cstddef>
+#include <exception>
+#include <thread>
+#include <vector>
+
+namespace rdmesh {
+
+/// The threads a run uses: `requested`, or all cores (std::thread::hardware_concurrency,
+/// at least 1) when it is 0.
+inline int resolve_threads(int requested) {
+  if (requested > 0) return requested;
+  return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+/// Items per chunk of for_chunks.
+constexpr std::size_t kParallelChunk = 4096;
+
+/// The number of chunks of [0, n): chunk k is [k * kParallelChunk, min(n, (k + 1) *
+/// kParallelChunk)).
+inline std::size_t chunk_count(std::size_t n) { return (n + kParallelChunk - 1) / kParallelChunk; }
+
+/// Calls body(chunk, begin, end) once for every chunk of [0, n), on up to
+/// `threads` threads (the calling one among them; 0: all cores). An exception
+/// thrown by a body is rethrown here after every thread stopped (the one of
+/// the lowest chunk when several threw).
+template <class Body>
+void for_chunks(std::size_t n, int threads, Body body) {
+  const std::size_t chunks = chunk_count(n);
+  const auto workers = static_cast<std::size_t>(
+      std::min<std::size_t>(static_cast<std::size_t>(resolve_threads(threads)), chunks));
+  if (workers <= 1) {
+    for (std::size_t k = 0; k < chunks; ++k)
+      body(k, k * kParallelChunk, std::min(n, (k + 1) * kParallelChunk));
+    return;
+  }
+  std::atomic<std::size_t> next{0};
+  std::vector<std::exception_ptr> errors(chunks);
+  auto work = [&] {
+    for (std::size_t k = next++; k < chunks; k = next++) {
+      try {
+        body(k, k * kParallelChunk, std::min(n, (k + 1) * kParallelChunk));
+      } catch (...) {
+        errors[k] = std::current_exception();
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  pool.reserve(workers - 1);
+  for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(work);
+  work();
+  for (std::thread& t : pool) t.join();
+  for (const std::exception_ptr& e : errors)
+    if (e) std::rethrow_exception(e);
+}
+
+/// Calls body(i) for every i in [0, n) (for_chunks, item by item).
+template <class Body>
+void parallel_for(std::size_t n, int threads, Body body) {
+  for_chunks(n, threads, [&](std::size_t, std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) body(i);
+  });
+}
+
+}  // namespace rdmesh
