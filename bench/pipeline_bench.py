@@ -1,0 +1,222 @@
+#!/usr/bin/env python3
+"""Whole-pipeline benchmark: rdmesh with 1 and 2 threads vs Gmsh HXT with 1 and 2 threads.
+
+usage: pipeline_bench.py BUILD_DIR [DATA_DIR] [--repeat R] [--large] [--out TABLE.md]
+
+Cases: the unit sphere (samples/sphere.json for rdmesh, an OpenCASCADE sphere
+for Gmsh) at sizes 0.05 and 0.025 (about 150 k and 1.1 M tetrahedra; --large
+adds 0.0125, about 9.5 M), and two shared STEP files (DATA_DIR/step:
+gmsh_Zylkopf.stp and occtsample_ANC101.step) with rdmesh's default sizes and
+Gmsh at the -clmax that gives about as many tets (diagonal / 20, scaled once by
+the cube root of the two counts; rdmesh's CAD sizes also follow curvature and
+thin parts, Gmsh's -clmax alone does not).
+
+Each command is the whole run as a user starts it (read, mesh, write a Medit
+.mesh file; rdmesh also writes no report): `rdmesh IN -o OUT.mesh -q --threads
+N` and `gmsh IN -3 -algo hxt -nt N -o OUT.mesh`. The four commands of a case
+run one after the other, R times (default 3), alternating, and the fastest
+wall time of each counts. Peak memory is the child's maximum resident set
+(/usr/bin/time -f %M). Tets and the minimum dihedral angle are read back from each .mesh
+file here, the same way for both tools (pure Python; slow on large meshes, not
+timed). The md5 column is the digest of rdmesh's output file of each thread
+count: equal digests across thread counts and repeats are the determinism
+claim. The ratio column is the wall time over Gmsh HXT's with the same thread
+count (< 1: rdmesh faster). Standard library only.
+"""
+import argparse
+import hashlib
+import math
+import os
+import subprocess
+import sys
+import tempfile
+import time
+
+
+def run(cmd, cwd):
+    """Wall time (s), peak RSS (MB) and exit status of `cmd`.
+
+    The peak comes from /usr/bin/time -f %M: the child's own rusage (/usr/bin/time -f %M)
+    starts at this process's resident size, which grows as it reads meshes back."""
+    with tempfile.TemporaryFile() as stderr, tempfile.NamedTemporaryFile("r") as peak:
+        t0 = time.monotonic()
+        p = subprocess.run(["/usr/bin/time", "-f", "%M", "-o", peak.name] + cmd, cwd=cwd,
+                           stdout=subprocess.DEVNULL, stderr=stderr)
+        wall = time.monotonic() - t0
+        stderr.seek(0)
+        err = stderr.read().decode(errors="replace").strip().splitlines()
+        text = peak.read().strip().splitlines()
+        rss = float(text[-1]) / 1024.0 if text and text[-1].isdigit() else float("nan")
+    return wall, rss, p.returncode, (err[-1] if err else "")
+
+
+def read_medit_tets(path):
+    """Vertices and tetrahedra (0-based) of an ASCII Medit .mesh file."""
+    with open(path) as f:
+        tokens = f.read().split()
+    vertices, tets = [], []
+    i = 0
+    while i < len(tokens):
+        key = tokens[i]
+        if key == "Vertices":
+            n = int(tokens[i + 1])
+            i += 2
+            vertices = [(float(tokens[i + 4 * k]), float(tokens[i + 4 * k + 1]),
+                         float(tokens[i + 4 * k + 2])) for k in range(n)]
+            i += 4 * n
+        elif key in ("Tetrahedra", "Triangles", "Edges", "Corners", "RequiredVertices",
+                     "Ridges", "RequiredEdges"):
+            n = int(tokens[i + 1])
+            width = {"Tetrahedra": 5, "Triangles": 4, "Edges": 3}.get(key, 1)
+            i += 2
+            if key == "Tetrahedra":
+                tets = [(int(tokens[i + 5 * k]) - 1, int(tokens[i + 5 * k + 1]) - 1,
+                         int(tokens[i + 5 * k + 2]) - 1, int(tokens[i + 5 * k + 3]) - 1)
+                        for k in range(n)]
+            i += width * n
+        else:
+            i += 1
+    return vertices, tets
+
+
+def min_dihedral_deg(vertices, tets):
+    """The smallest dihedral angle over all tets (degrees), from outward face normals."""
+    worst = -1.0
+    faces = ((1, 2, 3), (0, 2, 3), (0, 1, 3), (0, 1, 2))
+    for t in tets:
+        p = [vertices[v] for v in t]
+        normals = []
+        for k, (a, b, c) in enumerate(faces):
+            pa, pb, pc, pk = p[a], p[b], p[c], p[k]
+            ux, uy, uz = pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]
+            vx, vy, vz = pc[0] - pa[0], pc[1] - pa[1], pc[2] - pa[2]
+            nx, ny, nz = uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx
+            if nx * (pk[0] - pa[0]) + ny * (pk[1] - pa[1]) + nz * (pk[2] - pa[2]) > 0:
+                nx, ny, nz = -nx, -ny, -nz
+            length = math.sqrt(nx * nx + ny * ny + nz * nz)
+            if length == 0:
+                return 0.0
+            normals.append((nx / length, ny / length, nz / length))
+        for k in range(4):
+            for l in range(k + 1, 4):
+                c = -(normals[k][0] * normals[l][0] + normals[k][1] * normals[l][1] +
+                      normals[k][2] * normals[l][2])
+                if c > worst:
+                    worst = c
+    return math.degrees(math.acos(max(-1.0, min(1.0, worst)))) if tets else 0.0
+
+
+def md5(path):
+    h = hashlib.md5()
+    with open(path, "rb") as f:
+        for block in iter(lambda: f.read(1 << 20), b""):
+            h.update(block)
+    return h.hexdigest()
+
+
+def cases(args, repo, scratch):
+    sphere = os.path.join(repo, "samples", "sphere.json")
+    sizes = [0.05, 0.025] + ([0.0125] if args.large else [])
+    for h in sizes:
+        geo = os.path.join(scratch, "sphere_%g.geo" % h)
+        with open(geo, "w") as f:
+            f.write('SetFactory("OpenCASCADE");\nSphere(1) = {0, 0, 0, 1};\n'
+                    "Mesh.CharacteristicLengthMax = %r;\nMesh.CharacteristicLengthMin = %r;\n" % (h, h))
+        yield "sphere h=%g" % h, [sphere, "--size", str(h)], [geo]
+    for name in ("gmsh_Zylkopf.stp", "occtsample_ANC101.step"):
+        path = os.path.join(args.data_dir, "step", name)
+        if not os.path.exists(path):
+            print("missing %s: skipped" % path, file=sys.stderr)
+            continue
+        # Gmsh at the size that gives about as many tets as rdmesh's defaults: from
+        # diagonal / 20, scaled once by the cube root of the two counts.
+        out = os.path.join(scratch, "calibrate.mesh")
+        p = subprocess.run([args.rdmesh, path, "-q", "--threads", "1", "-o", out],
+                           capture_output=True, text=True)
+        if p.returncode != 0:
+            print("%s: rdmesh failed (%s): skipped" % (name, p.stderr.strip()), file=sys.stderr)
+            continue
+        vertices, tets = read_medit_tets(out)
+        target = len(tets)
+        lo = [min(v[i] for v in vertices) for i in range(3)]
+        hi = [max(v[i] for v in vertices) for i in range(3)]
+        h = math.dist(lo, hi) / 20
+        p = subprocess.run([args.gmsh, path, "-3", "-algo", "hxt", "-nt", "1", "-clmax", repr(h),
+                            "-o", out], capture_output=True, text=True)
+        if p.returncode == 0:
+            got = len(read_medit_tets(out)[1])
+            if got > 0:
+                h *= (got / target) ** (1.0 / 3.0)
+        yield name, [path], [path, "-clmax", repr(h)]
+
+
+def main():
+    here = os.path.dirname(os.path.abspath(__file__))
+    data = os.environ.get("RDMESH_DATA_DIR") or os.path.join(here, "..", "..", "shared", "data")
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("build_dir")
+    ap.add_argument("data_dir", nargs="?", default=os.path.normpath(data))
+    ap.add_argument("--repeat", type=int, default=3)
+    ap.add_argument("--large", action="store_true", help="also the sphere at ~9.5 M tets")
+    ap.add_argument("--gmsh", default="gmsh")
+    ap.add_argument("--out", help="also write the table to this Markdown file")
+    args = ap.parse_args()
+    args.rdmesh = os.path.abspath(os.path.join(args.build_dir, "cli", "rdmesh"))
+    repo = os.path.normpath(os.path.join(here, ".."))
+    rows = []
+    with tempfile.TemporaryDirectory() as scratch:
+        for name, rd_args, gm_args in list(cases(args, repo, scratch)):
+            tools = []
+            for n in (1, 2):
+                tools.append(("rdmesh -t%d" % n, n, lambda out, n=n: [args.rdmesh] + rd_args +
+                              ["-q", "--threads", str(n), "-o", out]))
+            for n in (1, 2):
+                tools.append(("gmsh hxt -nt%d" % n, n, lambda out, n=n: [args.gmsh] + gm_args +
+                              ["-3", "-algo", "hxt", "-nt", str(n), "-o", out]))
+            best = {}
+            digests = {}
+            for r in range(args.repeat):
+                for label, n, cmd in tools:
+                    out = os.path.join(scratch, "%s_%d.mesh" % (label.replace(" ", "_"), r))
+                    wall, rss, code, err = run(cmd(out), scratch)
+                    if code != 0:
+                        print("%s %s: exit %d %s" % (name, label, code, err), file=sys.stderr)
+                        continue
+                    if label.startswith("rdmesh"):
+                        digests.setdefault(label, set()).add(md5(out))
+                    if label not in best or wall < best[label][0]:
+                        if label in best and best[label][2] != out:
+                            os.remove(best[label][2])
+                        best[label] = (wall, rss, out)
+                    else:
+                        os.remove(out)
+                    print("%s %s run %d: %.2f s, %.0f MB" % (name, label, r + 1, wall, rss),
+                          file=sys.stderr)
+            for label, n, _ in tools:
+                if label not in best:
+                    rows.append((name, label, None, None, None, None, None, ""))
+                    continue
+                wall, rss, out = best[label]
+                vertices, tets = read_medit_tets(out)
+                anchor = best.get("gmsh hxt -nt%d" % n)
+                ratio = wall / anchor[0] if anchor and label.startswith("rdmesh") else None
+                digest = ",".join(sorted(d[:8] for d in digests.get(label, ())))
+                rows.append((name, label, wall, len(tets), min_dihedral_deg(vertices, tets), rss,
+                             ratio, digest))
+    lines = ["| case | tool | wall s | tets | min dihedral deg | peak MB | / HXT same threads | md5 |",
+             "|---|---|---:|---:|---:|---:|---:|---|"]
+    for name, label, wall, tets, angle, rss, ratio, digest in rows:
+        if wall is None:
+            lines.append("| %s | %s | failed | | | | | |" % (name, label))
+            continue
+        lines.append("| %s | %s | %.2f | %d | %.2f | %.0f | %s | %s |" % (
+            name, label, wall, tets, angle, rss, "%.2f" % ratio if ratio else "", digest))
+    table = "\n".join(lines)
+    print(table)
+    if args.out:
+        with open(args.out, "w") as f:
+            f.write(table + "\n")
+
+
+if __name__ == "__main__":
+    main()
