@@ -58,14 +58,19 @@ TetMesh Refiner::extract_mesh() {
 
 template <class IndexOf>
 void Refiner::extract_surface(TetMesh& mesh, IndexOf& index_of) {
-  for (auto f = tr_.finite_facets_begin(); f != tr_.finite_facets_end(); ++f) {
-    const Cell_handle c = f->first;
-    const int i = f->second;
-    const int patch = c->info().facet_patch[i];
-    if (patch == 0) continue;
-    mesh.triangles.push_back({index_of(c->vertex((i + 1) & 3)), index_of(c->vertex((i + 2) & 3)),
-                              index_of(c->vertex((i + 3) & 3))});
-    mesh.triangle_patch.push_back(PatchId{patch});
+  // Each restricted facet once, from its cell of smaller stamp. (CGAL's
+  // facet iterator picks the side by comparing cell addresses: the output
+  // then depended on the heap's layout, e.g. from the CLI to Python.)
+  for (auto c = tr_.all_cells_begin(); c != tr_.all_cells_end(); ++c) {
+    for (int i = 0; i < 4; ++i) {
+      const int patch = c->info().facet_patch[i];
+      if (patch == 0 || c->neighbor(i)->info().stamp < c->info().stamp) continue;
+      const Vertex_handle a = c->vertex((i + 1) & 3), b = c->vertex((i + 2) & 3),
+                          d = c->vertex((i + 3) & 3);
+      if (tr_.is_infinite(a) || tr_.is_infinite(b) || tr_.is_infinite(d)) continue;
+      mesh.triangles.push_back({index_of(a), index_of(b), index_of(d)});
+      mesh.triangle_patch.push_back(PatchId{patch});
+    }
   }
   // Consistent orientation across shared edges (closed pieces outward); a
   // non-manifold or non-orientable result keeps the triangles as they are.
