@@ -199,7 +199,7 @@ MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& given,
   }
   if (improvement.enabled && !options.surface_only) {
     announce(options, "improving the tetrahedra");
-    result.improvement = improve_tets(result.mesh, improvement);
+    result.improvement = improve_tets(result.mesh, improvement, {&oracle, criteria.facet_distance});
   }
   return result;
 }

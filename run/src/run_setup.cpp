@@ -424,6 +424,7 @@ nlohmann::json report_json(const Options& opt, const Criteria& criteria, const D
                        {"face_flips", improvement.face_flips},
                        {"edge_removals", improvement.edge_removals},
                        {"vertex_moves", improvement.vertex_moves},
+                       {"boundary_moves", improvement.boundary_moves},
                        {"vertex_insertions", improvement.vertex_insertions},
                        {"sweeps", improvement.sweeps},
                        {"time_limit_reached", improvement.time_limit_reached},
@@ -535,8 +536,8 @@ std::string format_run_summary(const Options& opt, const RefinementStats& stats,
       << improvement.histogram_after[0] + improvement.histogram_after[1] << ", "
       << improvement.edge_removals << " edge removals, " << improvement.face_flips
       << " face flips, " << improvement.vertex_moves << " vertex moves, "
-      << improvement.vertex_insertions << " new vertices"
-      << (improvement.time_limit_reached ? " (time limit reached)" : "") << '\n';
+      << improvement.boundary_moves << " moves along patches, " << improvement.vertex_insertions
+      << " new vertices" << (improvement.time_limit_reached ? " (time limit reached)" : "") << '\n';
   } else {
     s << "optimization: off\n";
   }

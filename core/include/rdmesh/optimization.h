@@ -90,6 +90,8 @@ struct TetImprovementOptions {
   /// only for tetrahedra below this angle (degrees; the costliest step).
   double max_insertions = 0.01;
   double insertion_bound_deg = 12;
+  /// Vertices on one patch only slide along it (given the surface, see improve_tets).
+  bool boundary_moves = true;
   /// Stop after this many seconds; 0 = no limit (the result is then no longer
   /// independent of the machine's speed).
   double time_limit_seconds = 0;
@@ -109,6 +111,7 @@ struct TetImprovementStats {
   std::size_t face_flips = 0;     ///< 2-3 flips (a face replaced by an edge)
   std::size_t edge_removals = 0;  ///< an edge and its ring of n tets replaced by 2n - 4 tets
   std::size_t vertex_moves = 0;   ///< vertices on no boundary triangle moved
+  std::size_t boundary_moves = 0;  ///< vertices moved along their patch
   /// Vertices added inside a tetrahedron and its neighbours (numbered after the others).
   std::size_t vertex_insertions = 0;
   int sweeps = 0;

@@ -4,6 +4,7 @@
 // 2-3 flips of its four faces, if one strictly raises the smallest angle of
 // what it replaces; else the smoothing of its free vertices; if it is still
 // there and below the bound, a new vertex inside it and its neighbours.
+// Given the exact surface, the vertices on one patch only slide along it too.
 // Vertices keep their indices; new ones come after them.
 #include "rdmesh/tet_improvement.h"
 
@@ -11,9 +12,11 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <utility>
 #include <vector>
 
+#include "patch_smoothing.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/parallel_for.h"
 #include "tet_flips.h"
@@ -74,7 +77,8 @@ bool best_flip(const TetTopology& topo, int t, LocalChange& best) {
 
 }  // namespace
 
-TetImprovementStats improve_tets(TetMesh& mesh, const TetImprovementOptions& options) {
+TetImprovementStats improve_tets(TetMesh& mesh, const TetImprovementOptions& options,
+                                 const BoundarySurface& surface) {
   if (!mesh.tet_mid_nodes.empty() || !mesh.tet_partition.empty()) {
     throw InputError("tetrahedra are improved before second-order nodes and partitions are made");
   }
@@ -95,6 +99,10 @@ TetImprovementStats improve_tets(TetMesh& mesh, const TetImprovementOptions& opt
   TetImprovementStats stats;
   stats.ran = true;
   TetTopology topo(mesh, options.threads);
+  std::optional<detail::PatchSurface> patches;
+  if (surface.oracle && options.boundary_moves) {
+    patches.emplace(mesh, *surface.oracle, surface.facet_distance);
+  }
   {
     // The tets' qualities before are the topology's: mesh.tets in order.
     std::vector<double> quality(mesh.tets.size());
@@ -132,6 +140,9 @@ TetImprovementStats improve_tets(TetMesh& mesh, const TetImprovementOptions& opt
       for (const int v : vertices) {
         if (detail::smooth_vertex(topo, v)) {
           ++stats.vertex_moves;
+          ++changes;
+        } else if (patches && detail::smooth_on_patch(topo, *patches, v)) {
+          ++stats.boundary_moves;
           ++changes;
         }
       }

@@ -1,0 +1,133 @@
+#include "patch_smoothing.h"
+
+#include <cmath>
+#include <limits>
+
+#include "tet_smoothing.h"
+
+namespace rdmesh::detail {
+namespace {
+
+constexpr int kIterations = 8;
+constexpr int kHalvings = 10;
+
+/// The triangle (a, b, c)'s vertices with vertex v at p.
+std::array<Point3, 3> corners_with(const TetTopology& topo, const std::array<int, 3>& f, int v,
+                                   const Point3& p) {
+  std::array<Point3, 3> q;
+  for (int k = 0; k < 3; ++k) q[k] = f[k] == v ? p : topo.point(f[k]);
+  return q;
+}
+
+Point3 area_normal(const std::array<Point3, 3>& q) { return cross(q[1] - q[0], q[2] - q[0]); }
+
+}  // namespace
+
+PatchSurface::PatchSurface(const TetMesh& mesh, const DomainOracle& oracle,
+                           const ScalarField& facet_distance)
+    : oracle_(oracle),
+      facet_distance_(facet_distance),
+      triangles_(mesh.triangles),
+      patch_(mesh.vertices.size(), 0),
+      triangles_of_(mesh.vertices.size()) {
+  normal0_.reserve(triangles_.size());
+  for (std::size_t f = 0; f < triangles_.size(); ++f) {
+    const auto& t = triangles_[f];
+    const Point3 n = area_normal({mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]});
+    const double len = norm(n);
+    normal0_.push_back(len > 0 ? (1.0 / len) * n : Point3{0, 0, 0});
+    for (const int v : t) {
+      triangles_of_[v].push_back(static_cast<int>(f));
+      const int patch = mesh.triangle_patch[f].value;
+      // -1: on triangles of two patches.
+      patch_[v] = patch_[v] == 0 || patch_[v] == patch ? patch : -1;
+    }
+  }
+  for (const auto& e : mesh.edges) patch_[e[0]] = patch_[e[1]] = -1;
+  for (const int v : mesh.corner_vertices) patch_[v] = -1;
+  for (int& p : patch_) p = std::max(p, 0);
+}
+
+std::optional<Point3> PatchSurface::project(const Point3& p, int patch) const {
+  const auto q = oracle_.project(p, PatchId{patch});
+  if (!q || !is_finite(*q)) return std::nullopt;
+  return q;
+}
+
+Point3 PatchSurface::normal_at(const TetTopology& topo, int v, const Point3& p) const {
+  Point3 n{0, 0, 0};
+  for (const int f : triangles_of_[v]) n = n + area_normal(corners_with(topo, triangles_[f], v, p));
+  const double len = norm(n);
+  return len > 0 ? (1.0 / len) * n : Point3{0, 0, 0};
+}
+
+bool PatchSurface::follows(const TetTopology& topo, int v, const Point3& p) const {
+  const double min_cos = std::cos(kMaxNormalTurnDeg * M_PI / 180);
+  const int patch = patch_[v];
+  for (const int f : triangles_of_[v]) {
+    const auto q = corners_with(topo, triangles_[f], v, p);
+    const Point3 n = area_normal(q);
+    const double len = norm(n);
+    if (!(len > 0) || !(dot(n, normal0_[f]) >= min_cos * len)) return false;
+  }
+  for (const int f : triangles_of_[v]) {
+    const auto q = corners_with(topo, triangles_[f], v, p);
+    Point3 samples[3] = {(1.0 / 3) * (q[0] + q[1] + q[2]), {}, {}};
+    int n = 1;
+    for (int k = 0; k < 3; ++k) {
+      if (triangles_[f][k] == v) continue;
+      samples[n++] = 0.5 * (p + q[k]);
+    }
+    for (const Point3& s : samples) {
+      const auto foot = project(s, patch);
+      if (!foot || !(distance(*foot, s) <= facet_distance_(s))) return false;
+    }
+  }
+  return true;
+}
+
+bool smooth_on_patch(TetTopology& topo, const PatchSurface& surface, int v) {
+  const int patch = surface.patch_of(v);
+  if (patch == 0 || topo.tets_of(v).empty()) return false;
+  double start = std::numeric_limits<double>::infinity();
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const int t : topo.tets_of(v)) {
+    start = std::min(start, topo.quality(t));
+    for (const int w : topo.tet(t)) {
+      if (w != v) nearest = std::min(nearest, distance(topo.point(w), topo.point(v)));
+    }
+  }
+  if (!(nearest > 0)) return false;
+  const Star star(topo, v);
+  Point3 at = topo.point(v);
+  double q = start;
+  // A trial position: projected onto the patch, kept when the star's smallest
+  // angle strictly rises and the triangles still follow the surface.
+  const auto try_at = [&](const Point3& p) {
+    const auto on = surface.project(p, patch);
+    if (!on) return false;
+    const double qp = star.min_quality(*on, q);
+    if (!(qp > q) || !surface.follows(topo, v, *on)) return false;
+    at = *on;
+    q = qp;
+    return true;
+  };
+  for (int it = 0; it < kIterations; ++it) {
+    // The ascent direction of the star's worst tetrahedra, in the tangent plane.
+    Point3 g = star.ascent(at, 1e-4 * nearest);
+    const Point3 n = surface.normal_at(topo, v, at);
+    g = g - dot(g, n) * n;
+    const double len = norm(g);
+    if (!(len > 0) || !std::isfinite(len)) break;
+    const Point3 dir = (1.0 / len) * g;
+    double step = 0.2 * nearest;
+    bool moved = false;
+    for (int k = 0; k < kHalvings && !moved; ++k, step *= 0.5) moved = try_at(at + step * dir);
+    if (!moved) break;
+  }
+  if (!(q > start)) return false;
+  topo.move(v, at);
+  return true;
+}
+
+}  // namespace rdmesh::detail
