@@ -29,7 +29,8 @@ bool classified_inside(const FacePatch& f, double u, double v) {
 
 /// Up to max_seeds points spread over the face's triangles (their order
 /// follows the cells' kd-tree, so spread indices are spread in space):
-/// centroids the cells call inside first, then any centroid inside the face.
+/// centroids the cells call inside, away from poles, first; then any centroid
+/// inside the face.
 std::vector<Point3> from_tessellation(const CadOracle::Model& m, const FacePatch& f,
                                      std::size_t max_seeds) {
   std::vector<std::array<double, 2>> sure, unsure;
@@ -37,7 +38,8 @@ std::vector<Point3> from_tessellation(const CadOracle::Model& m, const FacePatch
     const SurfaceTriangle& s = m.triangles[t];
     const double u = (s.uv[0][0] + s.uv[1][0] + s.uv[2][0]) / 3;
     const double v = (s.uv[0][1] + s.uv[1][1] + s.uv[2][1]) / 3;
-    const UvState state = f.cells.state_at(u, v);
+    UvState state = f.cells.state_at(u, v);
+    if (state == UvState::inside && f.cells.near_pole(u, v)) state = UvState::boundary;
     if (state == UvState::inside) sure.push_back({u, v});
     if (state == UvState::boundary) unsure.push_back({u, v});
   }

@@ -59,6 +59,10 @@ int crossing(const UvSegment& s, double ru, double rv, double u, double v, doubl
   return (o1 > 0) != (o2 > 0) && (o3 > 0) != (o4 > 0) ? 1 : 0;
 }
 
+// The widest tube a chord gets, x the (u, v) box diagonal (where the
+// surface's stretch vanishes, as at a pole).
+constexpr double kReachCap = 0.05;
+
 // How far in (u, v) a 3D distance `d` can reach from chord s: d over the
 // smallest stretch of the surface's Jacobian [Su Sv] at the chord's middle, at
 // most `cap`. A degenerated edge (a pole) is one 3D point: the points within d
@@ -79,7 +83,7 @@ double uv_reach(const GeomAdaptor_Surface& s, const UvSegment& chord, bool degen
 }  // namespace
 
 void boundary_segments(const FacePatch& f, std::vector<UvSegment>& out,
-                       std::vector<UvSegment>& fine) {
+                       std::vector<UvSegment>& fine, std::vector<UvSegment>* poles) {
   out.clear();
   fine.clear();
   std::vector<double> edge_tolerance, fine_tolerance;  // per chord
@@ -149,12 +153,27 @@ void boundary_segments(const FacePatch& f, std::vector<UvSegment>& out,
   const double margin = 1e-7 * uv_size + 2 * face_tolerance + gap;
   auto widen = [&](UvSegment& s, double edge_tol, bool pole) {
     const double tolerance = std::max(edge_tol, face_tolerance);
-    s.reach += margin + 2 * uv_reach(surface, s, pole, tolerance, 0.05 * uv_size);
+    s.reach += margin + 2 * uv_reach(surface, s, pole, tolerance, kReachCap * uv_size);
   };
   for (std::size_t i = 0; i < out.size(); ++i) widen(out[i], edge_tolerance[i], degenerated[i]);
+  if (poles) {
+    poles->clear();
+    for (std::size_t i = 0; i < out.size(); ++i) {
+      if (!degenerated[i]) continue;
+      poles->push_back(out[i]);
+      poles->back().reach += 2 * kReachCap * uv_size;
+    }
+  }
   for (std::size_t i = 0; i < fine.size(); ++i) {
     widen(fine[i], fine_tolerance[i], fine_degenerated[i]);
   }
+}
+
+bool UvCells::near_pole(double u, double v) const {
+  for (const UvSegment& s : poles) {
+    if (point_segment(u, v, s) <= s.reach) return true;
+  }
+  return false;
 }
 
 UvState UvCells::state_at(double u, double v) const {

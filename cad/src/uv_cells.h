@@ -48,8 +48,10 @@ struct UvSegment {
 };
 
 /// The face's pcurves as chords, and their finer chords (see the file comment).
+/// `poles`, when given, gets the chords of degenerated edges with a wide tube
+/// (see face_tessellation.cpp: the tessellation stays fine next to a pole).
 void boundary_segments(const FacePatch& f, std::vector<UvSegment>& chords,
-                       std::vector<UvSegment>& fine);
+                       std::vector<UvSegment>& fine, std::vector<UvSegment>* poles = nullptr);
 
 class UvCells {
  public:
@@ -96,6 +98,12 @@ class UvCells {
   std::vector<Node> nodes;  // nodes[0] is the root; empty: everything is boundary
   std::vector<UvSegment> segments;
   std::vector<UvSegment> fine;  ///< finer chords of the segments (UvSegment::fine_first)
+  /// Chords of degenerated edges (poles) with wide tubes: see near_pole().
+  std::vector<UvSegment> poles;
+  /// Whether (u, v) lies in a pole's wide tube, where the parametrization
+  /// collapses: the cells classify such points exactly, but a point evaluated
+  /// there lies next to the pole's vertex, a poor seed (cad_seeds.cpp).
+  bool near_pole(double u, double v) const;
   std::vector<int> segment_refs;
 
  private:

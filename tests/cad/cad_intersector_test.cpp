@@ -316,6 +316,31 @@ TEST(CadProject, LandsOnTheFaceAtTheClosestPoint) {
   EXPECT_GT(checked, 100);
 }
 
+// periodic_u_cst's two B-spline caps collapse to a pole (a degenerated edge)
+// at one corner of the part. The cells classify points next to a pole exactly,
+// but a seed evaluated there lies at the pole's vertex, and refinement then
+// sampled both caps down to the minimum size around it (the guard refused 69
+// points and the smallest dihedral fell from 15.9 to 7.3 degrees). Seeds come
+// from centroids away from the poles' tubes: then no two lie within 1e-3 of the
+// diagonal (at the pole two were 2e-6 apart; now 0.0095).
+TEST(CadSeeds, StayAwayFromPoles) {
+  const auto oracle = load_shared("gmsh_periodic_u_cst.step");
+  if (!oracle) RDMESH_MISSING_SHARED_DATA("step/ files");
+  std::vector<Point3> seeds;
+  for (const PatchInfo& patch : oracle->patches()) {
+    for (const Point3& s : oracle->initial_points(patch.id)) seeds.push_back(s);
+  }
+  double nearest = HUGE_VAL;
+  for (std::size_t i = 0; i < seeds.size(); ++i) {
+    for (std::size_t j = 0; j < i; ++j) nearest = std::min(nearest, distance(seeds[i], seeds[j]));
+  }
+  const double diag = oracle->bounding_box().diagonal();
+  std::printf("%zu seeds, the nearest two %.4g of the diagonal apart\n", seeds.size(),
+              nearest / diag);
+  EXPECT_GE(seeds.size(), 9u);
+  EXPECT_GT(nearest, 1e-3 * diag);
+}
+
 // distance_to_other_patches() from points near the curves, skipping the
 // curve's own faces, against the closest point of every other face found by
 // BRepExtrema: never nearer than that (its points lie on the faces), and equal
