@@ -13,7 +13,11 @@
 //     normal it had in the input mesh (no fold of the boundary);
 //   - each such triangle's centroid and the midpoints of its edges at the
 //     vertex stay within the facet distance of the patch (the projection's
-//     distance), so the boundary follows the surface as the criteria ask.
+//     distance), and, on a triangle with no vertex on a feature edge or
+//     corner (where R4 bounds it), its circumcentre too, or no farther than
+//     before, so the boundary follows the surface as the criteria ask.
+// The climb checks the normals at every step and the distances (9 to 24
+// projections) once, at the last position that keeps them.
 // The triangles, their patches and the feature edges keep their vertices; the
 // subdomains' volumes change only by the moved boundary's deviation, within
 // what the facet distance allows.
@@ -47,8 +51,13 @@ class PatchSurface {
   /// when they cancel.
   Point3 normal_at(const TetTopology& topo, int v, const Point3& p) const;
   /// True when v's triangles, with v at p, keep their normals within
-  /// kMaxNormalTurnDeg of the input's and follow the patch within the facet distance.
-  bool follows(const TetTopology& topo, int v, const Point3& p) const;
+  /// kMaxNormalTurnDeg of the input's.
+  bool keeps_normals(const TetTopology& topo, int v, const Point3& p) const;
+  /// True when v's triangles, with v at p, have their centroids and the
+  /// midpoints of their edges at v within the facet distance of v's patch, and
+  /// (for those on no feature vertex, where R4 bounds it) their circumcentres
+  /// within it or no farther from it than before the move.
+  bool near_surface(const TetTopology& topo, int v, const Point3& p) const;
 
  private:
   const DomainOracle& oracle_;
@@ -56,6 +65,7 @@ class PatchSurface {
   std::vector<std::array<int, 3>> triangles_;
   std::vector<Point3> normal0_;  ///< unit normal of each triangle in the input
   std::vector<int> patch_;
+  std::vector<char> feature_;  ///< on a feature edge or a corner
   std::vector<std::vector<int>> triangles_of_;
 };
 
