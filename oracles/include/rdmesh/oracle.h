@@ -2,7 +2,7 @@
 //
 // An oracle describes the input complex F = Q u L u S u C of RR-7912 (section 2):
 // subdomains (cells C_l), patches (S_k) separating two subdomains (or a
-// subdomain and the outside), and later curves and corners. Every query is
+// subdomain and the outside), curves (L_j) and corners (Q). Every query is
 // const and must be thread-safe (no hidden mutable state shared between calls).
 #pragma once
 
