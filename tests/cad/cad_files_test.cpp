@@ -96,7 +96,9 @@ TEST(CadFiles, ReadsTheSharedStepAndBrepFiles) {
     RDMESH_REQUIRE_SHARED_DATA(path, e.file);
     const auto o = load_cad_file(path);
     EXPECT_EQ(static_cast<int>(o->subdomains().size()), e.solids);
-    if (e.faces > 0) EXPECT_EQ(static_cast<int>(o->patches().size()), e.faces);
+    if (e.faces > 0) {
+      EXPECT_EQ(static_cast<int>(o->patches().size()), e.faces);
+    }
     EXPECT_GT(o->exact_volume(), 0);
   }
 }

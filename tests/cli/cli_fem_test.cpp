@@ -205,7 +205,7 @@ TEST(CliFem, BadCurvatureIsAnInputError) {
   dir.write("d9.json", R"({"bbox": [-1, -1, -1, 1, 1, 1], "functions": {"s": "x^2+y^2+z^2-0.25"},
                            "sizes": {"patch:9": 0.1}})");
   dir.write("face9.json", R"({"face:9": 0.1})");
-  for (const std::string args :
+  for (const std::string& args :
        {sample + " --curvature 0", sample + " --curvature x", sample + " --sizes zero.json",
         std::string("d.json"), std::string("d9.json"), sample + " --sizes face9.json"}) {
     const CliRun run = run_cli(args + " -o out.msh", dir.path());
