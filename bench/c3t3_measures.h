@@ -50,7 +50,8 @@ void perturb_and_exude(C3t3& c3t3, const Domain& domain, AnchorResult& r) {
   const MeshQuality before = complex_quality(c3t3);
   r.min_dihedral_before_deg = before.min_dihedral_deg;
   r.below_10_deg_before = before.below_10_deg;
-  auto seconds = [](std::chrono::steady_clock::time_point a, std::chrono::steady_clock::time_point b) {
+  auto seconds = [](std::chrono::steady_clock::time_point a,
+                    std::chrono::steady_clock::time_point b) {
     return std::chrono::duration<double>(b - a).count();
   };
   const auto t0 = std::chrono::steady_clock::now();

@@ -2,9 +2,6 @@
 // translation unit of rdmesh that instantiates Mesh_3 (compiles slowly).
 #include "cgal_anchor.h"
 
-#include <chrono>
-#include <stdexcept>
-
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Labeled_mesh_domain_3.h>
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
@@ -13,6 +10,9 @@
 #include <CGAL/Random.h>
 #include <CGAL/make_mesh_3.h>
 #include <CGAL/version_macros.h>
+
+#include <chrono>
+#include <stdexcept>
 
 #include "c3t3_measures.h"
 #include "shapes.h"
@@ -34,8 +34,8 @@ double seconds_between(std::chrono::steady_clock::time_point a,
 
 }  // namespace
 
-AnchorResult run_cgal_anchor(const std::string& shape_name, double h,
-                             double relative_error_bound, bool optimize) {
+AnchorResult run_cgal_anchor(const std::string& shape_name, double h, double relative_error_bound,
+                             bool optimize) {
   const rdmesh_bench::Shape* shape = rdmesh_bench::find_shape(shape_name);
   if (shape == nullptr) throw std::invalid_argument("unknown shape: " + shape_name);
   const auto f = shape->f;
@@ -54,11 +54,10 @@ AnchorResult run_cgal_anchor(const std::string& shape_name, double h,
       [f](const Point& p) { return f(p.x(), p.y(), p.z()); }, box,
       params::relative_error_bound = relative_error_bound, params::p_rng = &rng);
 
-  Mesh_criteria criteria(params::facet_angle = bc.facet_angle_deg,
-                         params::facet_size = bc.facet_size,
-                         params::facet_distance = bc.facet_distance,
-                         params::cell_radius_edge_ratio = bc.cell_radius_edge,
-                         params::cell_size = bc.cell_size);
+  Mesh_criteria criteria(
+      params::facet_angle = bc.facet_angle_deg, params::facet_size = bc.facet_size,
+      params::facet_distance = bc.facet_distance,
+      params::cell_radius_edge_ratio = bc.cell_radius_edge, params::cell_size = bc.cell_size);
 
   const auto t0 = std::chrono::steady_clock::now();
   C3t3 c3t3 = CGAL::make_mesh_3<C3t3>(domain, criteria, params::no_perturb(), params::no_exude());

@@ -15,10 +15,10 @@ struct AnchorResult {
   std::size_t non_positive = 0;  ///< cells that are not positively oriented (expected 0)
   std::size_t below_10_deg = 0;  ///< cells with a dihedral angle < 10 degrees
   // --optimize only: make_mesh_3's perturb() and exude() as separate, timed steps.
-  double min_dihedral_before_deg = 0;   ///< after refinement
-  std::size_t below_10_deg_before = 0;  ///< after refinement
+  double min_dihedral_before_deg = 0;     ///< after refinement
+  std::size_t below_10_deg_before = 0;    ///< after refinement
   double min_dihedral_perturbed_deg = 0;  ///< after perturb_mesh_3
-  double refine_seconds = 0;   ///< make_mesh_3 with no_perturb(), no_exude()
+  double refine_seconds = 0;              ///< make_mesh_3 with no_perturb(), no_exude()
   double perturb_seconds = 0;  ///< perturb_mesh_3 (time limit = refine time, as make_mesh_3)
   double exude_seconds = 0;    ///< exude_mesh_3 (time limit = refine time, as make_mesh_3)
 };
@@ -33,8 +33,8 @@ struct AnchorResult {
 /// make_mesh_3(..., perturb(), exude()) does (default bounds, each step's time
 /// limit = the refinement time), each step timed and measured; `seconds` is
 /// then the total.
-AnchorResult run_cgal_anchor(const std::string& shape, double h,
-                             double relative_error_bound = 1e-3, bool optimize = false);
+AnchorResult run_cgal_anchor(const std::string& shape, double h, double relative_error_bound = 1e-3,
+                             bool optimize = false);
 
 /// CGAL version the anchor was compiled against, e.g. "5.5.1".
 std::string cgal_anchor_version();

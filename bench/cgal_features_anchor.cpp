@@ -2,12 +2,6 @@
 // polyline features, so that Mesh_3 protects the curves with weighted balls.
 #include "cgal_features_anchor.h"
 
-#include <chrono>
-#include <cmath>
-#include <stdexcept>
-#include <unordered_map>
-#include <vector>
-
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Labeled_mesh_domain_3.h>
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
@@ -16,6 +10,12 @@
 #include <CGAL/Mesh_triangulation_3.h>
 #include <CGAL/Random.h>
 #include <CGAL/make_mesh_3.h>
+
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+#include <unordered_map>
+#include <vector>
 
 namespace rdmesh_bench {
 namespace {
@@ -26,7 +26,7 @@ using Implicit_domain = CGAL::Labeled_mesh_domain_3<K>;
 using Mesh_domain = CGAL::Mesh_domain_with_polyline_features_3<Implicit_domain>;
 using Tr = CGAL::Mesh_triangulation_3<Mesh_domain, CGAL::Default, CGAL::Sequential_tag>::type;
 using C3t3 = CGAL::Mesh_complex_3_in_triangulation_3<Tr, Mesh_domain::Corner_index,
-                                                      Mesh_domain::Curve_index>;
+                                                     Mesh_domain::Curve_index>;
 using Mesh_criteria = CGAL::Mesh_criteria_3<Tr>;
 using Polyline = std::vector<Point>;
 
@@ -87,13 +87,14 @@ FeatureAnchorResult run_cgal_features(const std::string& shape, double h, bool o
       box, params::relative_error_bound = 1e-6, params::p_rng = &rng));
   const std::vector<Polyline> lines = cyl ? rims() : cube_edges();
   domain.add_features(lines.begin(), lines.end());
-  Mesh_criteria criteria(params::edge_size = h, params::facet_angle = 25.0,
-                         params::facet_size = h, params::facet_distance = h / 10,
-                         params::cell_radius_edge_ratio = 3.0, params::cell_size = h);
+  Mesh_criteria criteria(params::edge_size = h, params::facet_angle = 25.0, params::facet_size = h,
+                         params::facet_distance = h / 10, params::cell_radius_edge_ratio = 3.0,
+                         params::cell_size = h);
   const auto t0 = std::chrono::steady_clock::now();
-  C3t3 c3t3 = optimize ? CGAL::make_mesh_3<C3t3>(domain, criteria, params::perturb(), params::exude())
-                       : CGAL::make_mesh_3<C3t3>(domain, criteria, params::no_perturb(),
-                                                 params::no_exude());
+  C3t3 c3t3 =
+      optimize
+          ? CGAL::make_mesh_3<C3t3>(domain, criteria, params::perturb(), params::exude())
+          : CGAL::make_mesh_3<C3t3>(domain, criteria, params::no_perturb(), params::no_exude());
   FeatureAnchorResult r;
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::vector<Vec3> vertices;

@@ -69,9 +69,13 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
-  std::printf("| case | h | rdmesh tets | rdmesh s | CGAL tets | CGAL s | time ratio r/C | "
-              "min dihedral (r / C) | rdmesh guard |\n|---|---|---|---|---|---|---|---|---|\n");
-  struct Case { const char* shape; double h; };
+  std::printf(
+      "| case | h | rdmesh tets | rdmesh s | CGAL tets | CGAL s | time ratio r/C | "
+      "min dihedral (r / C) | rdmesh guard |\n|---|---|---|---|---|---|---|---|---|\n");
+  struct Case {
+    const char* shape;
+    double h;
+  };
   for (const Case& c : {Case{"capped_cylinder", 0.05}, Case{"capped_cylinder", 0.025},
                         Case{"cube", 0.05}, Case{"cube", 0.025}}) {
     std::vector<double> rt, ct;

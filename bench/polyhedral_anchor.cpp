@@ -15,10 +15,10 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "c3t3_measures.h"
 #include "rdmesh/mesher.h"
 #include "rdmesh/triangle_mesh_check.h"
 #include "rdmesh/triangle_mesh_oracle.h"
-#include "c3t3_measures.h"
 
 namespace {
 
@@ -68,12 +68,14 @@ AnchorResult run_cgal_polyhedral(const std::string& shape, double h_fraction, bo
   std::vector<K::Point_3> points;
   for (const rdmesh::Point3& p : soup.points) points.emplace_back(p.x, p.y, p.z);
   std::vector<std::vector<std::size_t>> polygons;
-  for (const auto& t : soup.triangles) polygons.push_back({std::size_t(t[0]), std::size_t(t[1]), std::size_t(t[2])});
+  for (const auto& t : soup.triangles)
+    polygons.push_back({std::size_t(t[0]), std::size_t(t[1]), std::size_t(t[2])});
   Polyhedron poly;
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, poly);
   const auto box = CGAL::Polygon_mesh_processing::bbox(poly);
-  const double diag = std::sqrt(std::pow(box.xmax() - box.xmin(), 2) + std::pow(box.ymax() - box.ymin(), 2) +
-                                std::pow(box.zmax() - box.zmin(), 2));
+  const double diag =
+      std::sqrt(std::pow(box.xmax() - box.xmin(), 2) + std::pow(box.ymax() - box.ymin(), 2) +
+                std::pow(box.zmax() - box.zmin(), 2));
   const double h = h_fraction * diag * 1.02;  // rdmesh's box is 1% larger on each side
   namespace params = CGAL::parameters;
   const auto t0 = std::chrono::steady_clock::now();

@@ -72,7 +72,7 @@ struct Wire {
 
 struct Outcome {
   Wire w;
-  std::string error;  ///< empty when ok
+  std::string error;      ///< empty when ok
   long peak_rss_kb = -1;  ///< -1 when unknown (--no-fork)
 };
 
@@ -103,10 +103,9 @@ Wire run_side_inline(Side side, const Case& c) {
       w.refine_seconds = r.refine_seconds;
       w.exude_seconds = r.optimize_seconds;
     } else {
-      const AnchorResult r =
-          is_polyhedral_shape(c.shape)
-              ? run_cgal_polyhedral(c.shape, c.h, g_optimize)
-              : run_cgal_anchor(c.shape, c.h, g_cgal_relative_error, g_optimize);
+      const AnchorResult r = is_polyhedral_shape(c.shape)
+                                 ? run_cgal_polyhedral(c.shape, c.h, g_optimize)
+                                 : run_cgal_anchor(c.shape, c.h, g_cgal_relative_error, g_optimize);
       w.tets = r.tets;
       w.vertices = r.vertices;
       w.seconds = r.seconds;
@@ -189,9 +188,9 @@ Outcome run_side(Side side, const Case& c, bool fork_side, int timeout_s) {
   out.peak_rss_kb = ru.ru_maxrss;  // kilobytes on Linux
   if (WIFSIGNALED(status)) {
     const int sig = WTERMSIG(status);
-    out.error = sig == SIGALRM ? "timeout after " + std::to_string(timeout_s) + " s"
-                               : "killed by signal " + std::to_string(sig) + " (" +
-                                     strsignal(sig) + ")";
+    out.error = sig == SIGALRM
+                    ? "timeout after " + std::to_string(timeout_s) + " s"
+                    : "killed by signal " + std::to_string(sig) + " (" + strsignal(sig) + ")";
   } else if (got != sizeof w) {
     out.error = "child exited with status " + std::to_string(WEXITSTATUS(status));
   } else {
@@ -236,40 +235,48 @@ bool succeeded(const std::optional<Outcome>& o) { return o && o->error.empty(); 
 /// --optimize: smallest dihedral angle and tets below 10 degrees before and
 /// after each side's optimizers, and the optimizers' times.
 void print_optimize_table(const std::vector<Row>& rows, int repeat) {
-  std::printf("Sliver removal: rdmesh sliver exudation vs CGAL %s perturb_mesh_3 + exude_mesh_3 as\n"
-              "make_mesh_3(perturb(), exude()) runs them (default bounds, time limit = refine time\n"
-              "each); same criteria as the refinement table (cell radius-edge 3); %d run(s) per side,\n"
-              "median total time; CGAL relative_error_bound %g. Angles in degrees, min over all tets;\n"
-              "'<10' = tets with a dihedral angle below 10 degrees.\n\n",
-              cgal_anchor_version().c_str(), repeat, g_cgal_relative_error);
-  std::printf("| case | tets (r / C) | min dihedral before (r / C) | rdmesh after exude | CGAL after "
-              "perturb | CGAL after exude | <10 before (r / C) | <10 after (r / C) | refine s (r / C) "
-              "| optimize s (r / C) | CGAL perturb s + exude s | optimize time ratio r/C |\n");
+  std::printf(
+      "Sliver removal: rdmesh sliver exudation vs CGAL %s perturb_mesh_3 + exude_mesh_3 as\n"
+      "make_mesh_3(perturb(), exude()) runs them (default bounds, time limit = refine time\n"
+      "each); same criteria as the refinement table (cell radius-edge 3); %d run(s) per side,\n"
+      "median total time; CGAL relative_error_bound %g. Angles in degrees, min over all tets;\n"
+      "'<10' = tets with a dihedral angle below 10 degrees.\n\n",
+      cgal_anchor_version().c_str(), repeat, g_cgal_relative_error);
+  std::printf(
+      "| case | tets (r / C) | min dihedral before (r / C) | rdmesh after exude | CGAL after "
+      "perturb | CGAL after exude | <10 before (r / C) | <10 after (r / C) | refine s (r / C) "
+      "| optimize s (r / C) | CGAL perturb s + exude s | optimize time ratio r/C |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const Row& row : rows) {
     const bool rok = succeeded(row.r), cok = succeeded(row.cg);
     const Wire* r = rok ? &row.r->w : nullptr;
     const Wire* c = cok ? &row.cg->w : nullptr;
-    auto num = [](const Wire* w, const char* f, double v) { return w ? fmt(f, v) : std::string("-"); };
-    auto cnt = [](const Wire* w, std::uint64_t v) { return w ? std::to_string(v) : std::string("-"); };
+    auto num = [](const Wire* w, const char* f, double v) {
+      return w ? fmt(f, v) : std::string("-");
+    };
+    auto cnt = [](const Wire* w, std::uint64_t v) {
+      return w ? std::to_string(v) : std::string("-");
+    };
     const std::string rt = rok ? std::to_string(r->tets) : row.r ? cell_error(row.r->error) : "-";
     const std::string ct = cok ? std::to_string(c->tets) : row.cg ? cell_error(row.cg->error) : "-";
     const double c_opt = c ? c->perturb_seconds + c->exude_seconds : 0;
-    std::printf("| %s | %s / %s | %s / %s | %s | %s | %s | %s / %s | %s / %s | %s / %s | %s / %s | %s + %s | %s |\n",
-                row.c.name.c_str(), rt.c_str(), ct.c_str(),
-                num(r, "%.2f", r ? r->min_dihedral_before_deg : 0).c_str(),
-                num(c, "%.2f", c ? c->min_dihedral_before_deg : 0).c_str(),
-                num(r, "%.2f", r ? r->min_dihedral_deg : 0).c_str(),
-                num(c, "%.2f", c ? c->min_dihedral_perturbed_deg : 0).c_str(),
-                num(c, "%.2f", c ? c->min_dihedral_deg : 0).c_str(),
-                cnt(r, r ? r->below_10_before : 0).c_str(), cnt(c, c ? c->below_10_before : 0).c_str(),
-                cnt(r, r ? r->below_10 : 0).c_str(), cnt(c, c ? c->below_10 : 0).c_str(),
-                num(r, "%.2f", r ? r->refine_seconds : 0).c_str(),
-                num(c, "%.2f", c ? c->refine_seconds : 0).c_str(),
-                num(r, "%.2f", r ? r->exude_seconds : 0).c_str(), num(c, "%.2f", c_opt).c_str(),
-                num(c, "%.2f", c ? c->perturb_seconds : 0).c_str(),
-                num(c, "%.2f", c ? c->exude_seconds : 0).c_str(),
-                r && c && c_opt > 0 ? fmt("%.2f", r->exude_seconds / c_opt).c_str() : "-");
+    std::printf(
+        "| %s | %s / %s | %s / %s | %s | %s | %s | %s / %s | %s / %s | %s / %s | %s / %s | %s + %s "
+        "| %s |\n",
+        row.c.name.c_str(), rt.c_str(), ct.c_str(),
+        num(r, "%.2f", r ? r->min_dihedral_before_deg : 0).c_str(),
+        num(c, "%.2f", c ? c->min_dihedral_before_deg : 0).c_str(),
+        num(r, "%.2f", r ? r->min_dihedral_deg : 0).c_str(),
+        num(c, "%.2f", c ? c->min_dihedral_perturbed_deg : 0).c_str(),
+        num(c, "%.2f", c ? c->min_dihedral_deg : 0).c_str(),
+        cnt(r, r ? r->below_10_before : 0).c_str(), cnt(c, c ? c->below_10_before : 0).c_str(),
+        cnt(r, r ? r->below_10 : 0).c_str(), cnt(c, c ? c->below_10 : 0).c_str(),
+        num(r, "%.2f", r ? r->refine_seconds : 0).c_str(),
+        num(c, "%.2f", c ? c->refine_seconds : 0).c_str(),
+        num(r, "%.2f", r ? r->exude_seconds : 0).c_str(), num(c, "%.2f", c_opt).c_str(),
+        num(c, "%.2f", c ? c->perturb_seconds : 0).c_str(),
+        num(c, "%.2f", c ? c->exude_seconds : 0).c_str(),
+        r && c && c_opt > 0 ? fmt("%.2f", r->exude_seconds / c_opt).c_str() : "-");
   }
 }
 
@@ -280,9 +287,10 @@ void usage(const char* argv0) {
                "cases:",
                argv0);
   for (const Case& c : all_cases()) std::fprintf(stderr, " %s", c.name.c_str());
-  std::fprintf(stderr, "\n--quick: sphere-0.1 and torus-0.05. Default: all cases, once per side.\n"
-                       "--optimize: sliver removal table (rdmesh exudation vs CGAL perturb + exude);\n"
-                       "  default cases sphere-0.025 and torus-0.05.\n");
+  std::fprintf(stderr,
+               "\n--quick: sphere-0.1 and torus-0.05. Default: all cases, once per side.\n"
+               "--optimize: sliver removal table (rdmesh exudation vs CGAL perturb + exude);\n"
+               "  default cases sphere-0.025 and torus-0.05.\n");
 }
 
 }  // namespace
@@ -326,19 +334,20 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
-  if (repeat < 1 || !(g_cgal_relative_error > 0) || (sides != "both" && sides != "rdmesh" && sides != "cgal")) {
+  if (repeat < 1 || !(g_cgal_relative_error > 0) ||
+      (sides != "both" && sides != "rdmesh" && sides != "cgal")) {
     usage(argv[0]);
     return 2;
   }
   std::vector<Case> cases;
   for (const Case& c : all_cases()) {
-    const bool default_pick =
-        g_optimize ? (quick ? c.name == "sphere-0.1" || c.name == "torus-0.05"
-                            : c.name == "sphere-0.025" || c.name == "torus-0.05")
-                   : (!quick || c.quick);
-    const bool picked = selected.empty() ? default_pick
-                                         : std::find(selected.begin(), selected.end(), c.name) !=
-                                               selected.end();
+    const bool default_pick = g_optimize
+                                  ? (quick ? c.name == "sphere-0.1" || c.name == "torus-0.05"
+                                           : c.name == "sphere-0.025" || c.name == "torus-0.05")
+                                  : (!quick || c.quick);
+    const bool picked = selected.empty()
+                            ? default_pick
+                            : std::find(selected.begin(), selected.end(), c.name) != selected.end();
     if (picked) cases.push_back(c);
   }
   for (const std::string& s : selected) {
@@ -384,12 +393,16 @@ int main(int argc, char** argv) {
       all_ok = all_ok && (!row.r || succeeded(row.r)) && (!row.cg || succeeded(row.cg));
     return all_ok ? 0 : 1;
   }
-  std::printf("rdmesh vs CGAL %s Mesh_3 (sequential), criteria: facet angle 25, facet size = cell size = h,\n"
-              "facet distance h/10, cell radius-edge 3, no perturb, no exude; %d run(s) per side, median time;\n"
-              "CGAL relative_error_bound %g.\n\n",
-              cgal_anchor_version().c_str(), repeat, g_cgal_relative_error);
-  std::printf("| case | h | rdmesh tets | rdmesh s | rdmesh tets/s | CGAL tets | CGAL s | CGAL tets/s "
-              "| time ratio rdmesh/CGAL | min dihedral (r / C) | max radius-edge (r / C) |\n");
+  std::printf(
+      "rdmesh vs CGAL %s Mesh_3 (sequential), criteria: facet angle 25, facet size = cell size = "
+      "h,\n"
+      "facet distance h/10, cell radius-edge 3, no perturb, no exude; %d run(s) per side, median "
+      "time;\n"
+      "CGAL relative_error_bound %g.\n\n",
+      cgal_anchor_version().c_str(), repeat, g_cgal_relative_error);
+  std::printf(
+      "| case | h | rdmesh tets | rdmesh s | rdmesh tets/s | CGAL tets | CGAL s | CGAL tets/s "
+      "| time ratio rdmesh/CGAL | min dihedral (r / C) | max radius-edge (r / C) |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
   auto ok = [](const std::optional<Outcome>& o) { return o && o->error.empty(); };
   for (const Row& row : rows) {
@@ -422,11 +435,13 @@ int main(int argc, char** argv) {
                 cre.c_str());
   }
 
-  std::printf("\nSanity and memory: vertices, total volume of the tets (exact volume of the smooth "
-              "domain in brackets),\nrdmesh oracle setup time (box sampling, not in 'rdmesh s'), "
-              "minimum-size guard rejections,\npeak RSS of each side's own process.\n\n");
-  std::printf("| case | vertices (r / C) | volume (r / C) [exact] | rdmesh oracle setup s | rdmesh guard "
-              "rejections | peak RSS MB (r / C) |\n");
+  std::printf(
+      "\nSanity and memory: vertices, total volume of the tets (exact volume of the smooth "
+      "domain in brackets),\nrdmesh oracle setup time (box sampling, not in 'rdmesh s'), "
+      "minimum-size guard rejections,\npeak RSS of each side's own process.\n\n");
+  std::printf(
+      "| case | vertices (r / C) | volume (r / C) [exact] | rdmesh oracle setup s | rdmesh guard "
+      "rejections | peak RSS MB (r / C) |\n");
   std::printf("|---|---|---|---|---|---|\n");
   for (const Row& row : rows) {
     const rdmesh_bench::Shape* shape = rdmesh_bench::find_shape(row.c.shape);
@@ -446,8 +461,9 @@ int main(int argc, char** argv) {
     if (row.r && row.r->peak_rss_kb >= 0) rm = fmt("%.0f", row.r->peak_rss_kb / 1024.0);
     if (row.cg && row.cg->peak_rss_kb >= 0) cm = fmt("%.0f", row.cg->peak_rss_kb / 1024.0);
     std::printf("| %s | %s / %s | %s / %s [%.4f] | %s | %s | %s / %s |\n", row.c.name.c_str(),
-                rv.c_str(), cv.c_str(), rvol.c_str(), cvol.c_str(), shape ? shape->exact_volume : 0.0,
-                setup.c_str(), guard.c_str(), rm.c_str(), cm.c_str());
+                rv.c_str(), cv.c_str(), rvol.c_str(), cvol.c_str(),
+                shape ? shape->exact_volume : 0.0, setup.c_str(), guard.c_str(), rm.c_str(),
+                cm.c_str());
   }
   for (const Row& row : rows) {
     if (ok(row.r) && row.r->w.non_positive > 0)
@@ -458,7 +474,6 @@ int main(int argc, char** argv) {
                   row.c.name.c_str(), static_cast<std::size_t>(row.cg->w.non_positive));
   }
   bool all_ok = true;
-  for (const Row& row : rows)
-    all_ok = all_ok && (!row.r || ok(row.r)) && (!row.cg || ok(row.cg));
+  for (const Row& row : rows) all_ok = all_ok && (!row.r || ok(row.r)) && (!row.cg || ok(row.cg));
   return all_ok ? 0 : 1;
 }

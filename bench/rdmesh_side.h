@@ -11,15 +11,15 @@ struct RdmeshResult {
   double setup_seconds = 0;  ///< wall time of the ImplicitOracle constructor (box sampling)
   double min_dihedral_deg = 0;
   double max_radius_edge = 0;
-  double volume = 0;             ///< total volume of the tetrahedra, a sanity check
-  std::size_t non_positive = 0;  ///< tetrahedra that are not positively oriented (expected 0)
+  double volume = 0;                 ///< total volume of the tetrahedra, a sanity check
+  std::size_t non_positive = 0;      ///< tetrahedra that are not positively oriented (expected 0)
   std::size_t guard_rejections = 0;  ///< RefinementStats::guard_rejections
   std::size_t below_10_deg = 0;      ///< tets with a dihedral angle < 10 degrees
   // --optimize only (exudation on):
-  double min_dihedral_before_deg = 0;  ///< before exudation (ExudationStats)
-  std::size_t below_10_deg_before = 0; ///< before exudation (ExudationStats histogram)
-  double refine_seconds = 0;           ///< generate_mesh minus exudation
-  double optimize_seconds = 0;         ///< exudation (ExudationStats::seconds)
+  double min_dihedral_before_deg = 0;   ///< before exudation (ExudationStats)
+  std::size_t below_10_deg_before = 0;  ///< before exudation (ExudationStats histogram)
+  double refine_seconds = 0;            ///< generate_mesh minus exudation
+  double optimize_seconds = 0;          ///< exudation (ExudationStats::seconds)
 };
 
 namespace rdmesh {

@@ -13,7 +13,7 @@ inline constexpr double kPi = 3.14159265358979323846;
 
 struct Shape {
   std::string name;
-  std::array<double, 3> lo, hi;       ///< bounding box, identical for both meshers
+  std::array<double, 3> lo, hi;         ///< bounding box, identical for both meshers
   double (*f)(double, double, double);  ///< negative inside
   double exact_volume;                  ///< of the smooth domain, to check the meshes
 };
@@ -31,7 +31,10 @@ inline double torus_function(double x, double y, double z) {
 inline const std::vector<Shape>& shapes() {
   static const std::vector<Shape> all = {
       {"sphere", {-1.2, -1.2, -1.2}, {1.2, 1.2, 1.2}, &sphere_function, 4.0 / 3.0 * kPi},
-      {"torus", {-1.6, -1.6, -0.6}, {1.6, 1.6, 0.6}, &torus_function,
+      {"torus",
+       {-1.6, -1.6, -0.6},
+       {1.6, 1.6, 0.6},
+       &torus_function,
        2.0 * kPi * kPi * 1.0 * 0.35 * 0.35},
   };
   return all;

@@ -27,9 +27,9 @@ struct MeshQuality {
   double min_dihedral_deg = 180;
   double max_dihedral_deg = 0;
   double max_radius_edge = 0;
-  double volume = 0;                ///< sum of |volume|
-  std::size_t non_positive = 0;     ///< tets with signed volume <= 0 (orientation check)
-  std::size_t below_10_deg = 0;     ///< tets whose smallest dihedral angle is < 10 degrees
+  double volume = 0;             ///< sum of |volume|
+  std::size_t non_positive = 0;  ///< tets with signed volume <= 0 (orientation check)
+  std::size_t below_10_deg = 0;  ///< tets whose smallest dihedral angle is < 10 degrees
 };
 
 /// `tets` index into `vertices` (0-based). Orientation only affects `non_positive`.

@@ -57,8 +57,7 @@ int mesh_command(const rdmesh::run::Options& opt) {
   if (!opt.quiet) {
     std::cout << format_summary(mesh_run.quality) << run::format_fem_summary(mesh_run.fem)
               << run::format_run_summary(opt, result.stats, result.exudation, result.improvement,
-                                         mesh_run.times,
-                                         !bad || opt.keep_bad_mesh);
+                                         mesh_run.times, !bad || opt.keep_bad_mesh);
   }
   for (const std::string& warning : run::run_warnings(result.stats)) {
     std::fprintf(stderr, "rdmesh: warning: %s\n", warning.c_str());
@@ -72,7 +71,8 @@ int mesh_command(const rdmesh::run::Options& opt) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc > 1 && std::string(argv[1]) == "view") return rdmesh::cli::run_view_command(argc - 1, argv + 1);
+  if (argc > 1 && std::string(argv[1]) == "view")
+    return rdmesh::cli::run_view_command(argc - 1, argv + 1);
   rdmesh::cli::setup_heap();
   CLI::App app{"rdmesh: tetrahedral meshes of domains bounded by piecewise smooth surfaces"};
   app.set_version_flag("--version", "rdmesh " RDMESH_VERSION);

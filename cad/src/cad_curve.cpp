@@ -141,8 +141,9 @@ double EdgeCurve::parameter_at_length(double ta, double s) const {
                            static_cast<int>(cumulative_.size()) - 2);
   double lo = std::max(ta, t0_ + k * cell_), hi = std::min(t1_, t0_ + (k + 1) * cell_);
   const double in_cell = cumulative_[k + 1] - cumulative_[k];
-  double t = in_cell > 0 ? t0_ + (k + std::clamp((target - cumulative_[k]) / in_cell, 0.0, 1.0)) * cell_
-                         : 0.5 * (lo + hi);
+  double t = in_cell > 0
+                 ? t0_ + (k + std::clamp((target - cumulative_[k]) / in_cell, 0.0, 1.0)) * cell_
+                 : 0.5 * (lo + hi);
   if (!(t > lo && t < hi)) t = 0.5 * (lo + hi);
   const double tolerance = 1e-12 * cumulative_.back();
   for (int it2 = 0; it2 < 60; ++it2) {

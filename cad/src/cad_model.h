@@ -77,7 +77,7 @@ class EdgeCurve final : public Curve {
   /// where its tangent is undefined.
   double curvature(double t) const override;
   /// The edge's 3D curve (before the end corrections), for reference checks.
-  const Handle(Geom_Curve)& geometry() const { return curve_; }
+  const Handle(Geom_Curve) & geometry() const { return curve_; }
   /// Whether point() reads B-spline span caches rather than the Geom_Curve.
   bool cached() const { return !spans_.empty(); }
 

@@ -192,7 +192,7 @@ SubdomainId CadOracle::locate_from(const Point3& p, const Point3& known,
 }
 
 DomainOracle::Located CadOracle::locate_across(const Point3& p, const Point3& known,
-                                              SubdomainId known_label) const {
+                                               SubdomainId known_label) const {
   const Model& m = *model_;
   if (!m.box.contains(p)) return {kOutside, std::nullopt};
   try {

@@ -295,8 +295,8 @@ CadReference::SurfaceCheck CadReference::check_surfaces(int per_side) {
         if (!derivatives) return;
         const Point3 eu{qu.X(), qu.Y(), qu.Z()}, ev{qv.X(), qv.Y(), qv.Z()};
         const double scale = std::max({norm(eu), norm(ev), 1e-300});
-        out.max_derivative_error = std::max(
-            out.max_derivative_error, std::max(distance(su, eu), distance(sv, ev)) / scale);
+        out.max_derivative_error = std::max(out.max_derivative_error,
+                                            std::max(distance(su, eu), distance(sv, ev)) / scale);
       };
       auto at = [&](double lo, double hi, int k) { return lo + (hi - lo) * (k + 0.5) / per_side; };
       for (int i = 0; i < per_side; ++i) {

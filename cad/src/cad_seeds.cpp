@@ -22,9 +22,8 @@ Point3 evaluate(const FacePatch& f, double u, double v) {
 }
 
 bool classified_inside(const FacePatch& f, double u, double v) {
-  return f.cells.classify(u, v, [&]() -> const BRepTopAdaptor_FClass2d& {
-    return *f.classifier;
-  }) == TopAbs_IN;
+  return f.cells.classify(
+             u, v, [&]() -> const BRepTopAdaptor_FClass2d& { return *f.classifier; }) == TopAbs_IN;
 }
 
 /// Up to max_seeds points spread over the face's triangles (their order
@@ -32,7 +31,7 @@ bool classified_inside(const FacePatch& f, double u, double v) {
 /// centroids the cells call inside, away from poles, first; then any centroid
 /// inside the face.
 std::vector<Point3> from_tessellation(const CadOracle::Model& m, const FacePatch& f,
-                                     std::size_t max_seeds) {
+                                      std::size_t max_seeds) {
   std::vector<std::array<double, 2>> sure, unsure;
   for (int t = f.first_triangle; t < f.end_triangle; ++t) {
     const SurfaceTriangle& s = m.triangles[t];

@@ -51,9 +51,8 @@ std::optional<LocalShape> local_shape(const cad::FacePatch& f, const Point3& p) 
   if (n.Magnitude() < 1e-300 || du.SquareMagnitude() < 1e-300 || dv.SquareMagnitude() < 1e-300)
     return std::nullopt;
   const gp_Vec m = n.Normalized();
-  return LocalShape{{m.X(), m.Y(), m.Z()},
-                    duu.Dot(m) / du.SquareMagnitude(),
-                    dvv.Dot(m) / dv.SquareMagnitude()};
+  return LocalShape{
+      {m.X(), m.Y(), m.Z()}, duu.Dot(m) / du.SquareMagnitude(), dvv.Dot(m) / dv.SquareMagnitude()};
 }
 
 }  // namespace

@@ -17,12 +17,12 @@
 namespace rdmesh::cad {
 namespace {
 
-constexpr double kMaxSpread = 0.16;         // rad: normals of a cell within this of their mean
-constexpr double kMaxBend = 0.02;           // chord sagitta / cell extent
-constexpr double kMaxSagitta = 1e-3;        // x model diagonal: largest chord sagitta
-constexpr double kMaxCell = 0.25;           // x model diagonal: largest cell
-constexpr double kBoundaryCell = 1.0 / 8;   // x face box diagonal: largest boundary cell
-constexpr int kMaxDepth = 24;               // adaptive binary splits of one cell
+constexpr double kMaxSpread = 0.16;        // rad: normals of a cell within this of their mean
+constexpr double kMaxBend = 0.02;          // chord sagitta / cell extent
+constexpr double kMaxSagitta = 1e-3;       // x model diagonal: largest chord sagitta
+constexpr double kMaxCell = 0.25;          // x model diagonal: largest cell
+constexpr double kBoundaryCell = 1.0 / 8;  // x face box diagonal: largest boundary cell
+constexpr int kMaxDepth = 24;              // adaptive binary splits of one cell
 constexpr double kConeFactor = 1.5, kConeMargin = 0.005;  // measured cone -> used cone
 constexpr double kDeviationFactor = 2;                    // sampled deviation -> bound
 

@@ -77,8 +77,8 @@ std::string color_of(const Handle(XCAFDoc_ColorTool) & colors, const Key& key) {
 }
 
 struct NamedSolid {
-  TopoDS_Shape solid;  // placed
-  std::string part;    // the product's name
+  TopoDS_Shape solid;    // placed
+  std::string part;      // the product's name
   std::string instance;  // the assembly instance's name
 };
 

@@ -62,7 +62,7 @@ class SurfaceEvaluator {
   // The piecewise polynomial form of a non-periodic B-spline surface (spans_ empty otherwise).
   struct Spans {
     Handle(Geom_BSplineSurface) surface;
-    TColStd_Array1OfReal u_flat, v_flat;   // knots with repetition
+    TColStd_Array1OfReal u_flat, v_flat;  // knots with repetition
     TColgp_Array2OfPnt poles;
     std::optional<TColStd_Array2OfReal> weights;
     std::vector<double> u_knots, v_knots;  // distinct knots, increasing

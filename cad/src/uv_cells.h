@@ -23,8 +23,8 @@
 #pragma once
 
 #include <BRepTopAdaptor_FClass2d.hxx>
-#include <gp_Pnt2d.hxx>
 #include <cstdint>
+#include <gp_Pnt2d.hxx>
 #include <vector>
 
 namespace rdmesh::cad {

@@ -83,8 +83,8 @@ std::optional<Point3> double_double_orthocenter(const std::array<Point3, 4>& p,
   const DD3 u = difference(p[1], p[0]), v = difference(p[2], p[0]), x = difference(p[3], p[0]);
   const DD3 vx = cross(v, x), xu = cross(x, u), uv = cross(u, v);
   const DD det = dot(u, vx);
-  const double m = std::sqrt(squared_norm(p[1] - p[0]) * squared_norm(p[2] - p[0]) *
-                             squared_norm(p[3] - p[0]));
+  const double m =
+      std::sqrt(squared_norm(p[1] - p[0]) * squared_norm(p[2] - p[0]) * squared_norm(p[3] - p[0]));
   if (!(std::fabs(det.hi) >= 1e-18 * m)) return std::nullopt;
   const DD w0{w[0], 0};
   const DD b0 = dot(u, u) - DD{w[1], 0} + w0, b1 = dot(v, v) - DD{w[2], 0} + w0,
@@ -111,7 +111,9 @@ Point3 exact_tet_orthocenter(const std::array<Point3, 4>& p, const std::array<do
   if (flat(p[0], p[1], p[2], p[3])) return {kInf, kInf, kInf};
   if (const auto z = double_double_orthocenter(p, w)) return *z;
   using EK = CGAL::Exact_predicates_exact_constructions_kernel;
-  const auto wp = [&](int i) { return EK::Weighted_point_3(EK::Point_3(p[i].x, p[i].y, p[i].z), w[i]); };
+  const auto wp = [&](int i) {
+    return EK::Weighted_point_3(EK::Point_3(p[i].x, p[i].y, p[i].z), w[i]);
+  };
   const EK::Point_3 z = CGAL::weighted_circumcenter(wp(0), wp(1), wp(2), wp(3));
   return rounded(z);
 }

@@ -14,7 +14,8 @@ TetMesh Refiner::extract_mesh() {
   TetMesh mesh;
   mesh.subdomains = oracle_.subdomains();
   mesh.patches = oracle_.patches();
-  for (auto v = tr_.finite_vertices_begin(); v != tr_.finite_vertices_end(); ++v) v->info().index = -1;
+  for (auto v = tr_.finite_vertices_begin(); v != tr_.finite_vertices_end(); ++v)
+    v->info().index = -1;
 
   auto index_of = [&](Vertex_handle v) {
     int& idx = v->info().index;

@@ -125,8 +125,8 @@ MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& given,
   double initial = 0, refine = 0;
   int restarts = 0;
   for (bool restart = true; restart;) {
-    refiner = std::make_unique<detail::Refiner>(oracle, criteria, options,
-                                                protect ? &plan : nullptr);
+    refiner =
+        std::make_unique<detail::Refiner>(oracle, criteria, options, protect ? &plan : nullptr);
     refiner->set_deadline(deadline);
     t = std::chrono::steady_clock::now();
     announce(options, "inserting initial points");

@@ -94,9 +94,11 @@ double ProtectionPlanner::step_at(const CurveData& d, double a) const {
   double s = std::min(size_here, cap_start + kGrowth * a);
   if (d.end >= 0) s = std::min(s, allowed(cap_end, std::max(0.0, d.length - a)));
   for (const Cap& cap : d.caps) {
-    s = std::min(s, cap.arc < a ? cap.value + kGrowth * (a - cap.arc) : allowed(cap.value, cap.arc - a));
+    s = std::min(
+        s, cap.arc < a ? cap.value + kGrowth * (a - cap.arc) : allowed(cap.value, cap.arc - a));
     if (d.c.info.closed) {  // the cap seen around the curve's closing point
-      const double wrapped = std::min(std::fabs(cap.arc + d.length - a), std::fabs(cap.arc - d.length - a));
+      const double wrapped =
+          std::min(std::fabs(cap.arc + d.length - a), std::fabs(cap.arc - d.length - a));
       s = std::min(s, allowed(cap.value, wrapped));
     }
   }
@@ -205,7 +207,8 @@ void ProtectionPlanner::sample_curve(CurveData& d) {
       // would give co-spherical ball quadruples, flat cells whose orthocenter
       // is undefined. The margins of B1 and B2 absorb the move.
       double a = arcs[k];
-      if (k > 0 && k < n) a += kJitter * std::min(steps[k - 1], steps[k]) * jitter(curve_index(d), k);
+      if (k > 0 && k < n)
+        a += kJitter * std::min(steps[k - 1], steps[k]) * jitter(curve_index(d), k);
       d.samples.push_back(sample(a, kRadiusRatio * s));
     }
     if (info.closed) {
@@ -237,7 +240,8 @@ bool ProtectionPlanner::shrink_ball(const BallRef& b, double factor, bool below_
   // follows the longer of its two steps, so it may exceed the caps at its own
   // place: with below_caps the new cap is a fraction of those.
   double now = HUGE_VAL;
-  for (const Cap& cap : d.caps) now = std::min(now, cap.value + kGrowth * std::fabs(cap.arc - s.arc));
+  for (const Cap& cap : d.caps)
+    now = std::min(now, cap.value + kGrowth * std::fabs(cap.arc - s.arc));
   const double size = s.radius / kRadiusRatio;
   const double value = std::max(factor * (below_caps ? std::min(now, size) : size), 2 * min_size_);
   if (value >= 0.999 * std::min(now, size)) return false;
@@ -266,7 +270,6 @@ void ProtectionPlanner::clamp_radius(const BallRef& b, double radius) {
 double ProtectionPlanner::radius_of(const BallRef& b) const {
   return b.curve < 0 ? corner_radius_[b.corner] : curves_[b.curve].samples[b.index].radius;
 }
-
 
 bool ProtectionPlanner::check_arcs() {
   bool changed = false;
@@ -377,7 +380,8 @@ bool ProtectionPlanner::separate_balls(bool record) {
   };
   auto key = [](std::int64_t x, std::int64_t y, std::int64_t z) {
     return (static_cast<std::uint64_t>(x & 0x1fffff) << 42) |
-           (static_cast<std::uint64_t>(y & 0x1fffff) << 21) | static_cast<std::uint64_t>(z & 0x1fffff);
+           (static_cast<std::uint64_t>(y & 0x1fffff) << 21) |
+           static_cast<std::uint64_t>(z & 0x1fffff);
   };
   // Two grids: every ball, and the balls that moved. A moved ball looks for
   // partners among all, an unmoved one among the moved only: each pair with a

@@ -21,9 +21,9 @@
 // chain of its consecutive ball centres (a point of the curve has negative
 // power to one of its own balls and positive power to every ball that does not
 // contain it, so no other ball's power cell reaches the curve), whatever the
-// angles at which features meet (rule R1 never fires), and every refinement point of rules R3-R5 lies
-// outside all balls (a point of non-negative power to every vertex), so no
-// later insertion encroaches a curve.
+// angles at which features meet (rule R1 never fires), and every refinement point of rules R3-R5
+// lies outside all balls (a point of non-negative power to every vertex), so no later insertion
+// encroaches a curve.
 //
 // Construction. A corner ball has its own radius (at most the edge size and
 // 0.4 of the distance to the nearest other corner). Between the corner balls
@@ -163,7 +163,7 @@ class ProtectionPlanner {
     int start = -1, end = -1;  ///< corner indices (open curves)
     std::vector<Cap> caps;
     std::vector<BallSample> samples;
-    bool dirty = true;  ///< caps or corner radii changed since the last sampling
+    bool dirty = true;   ///< caps or corner radii changed since the last sampling
     bool clear = false;  ///< samples checked against the other patches since the last sampling
     bool moved = true;   ///< sampled again since the last separate_balls()
   };

@@ -9,8 +9,8 @@
 // Rules apply in order: arcs (R1, R2) before facets (R3, R4) before cells (R5).
 #include "refiner.h"
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 
 #include "rdmesh/errors.h"
 
@@ -79,8 +79,7 @@ void Refiner::insert_initial_points() {
   }
   if (tr_.dimension() < 3) {
     throw OracleError("the oracle's initial points span no volume (" +
-                      std::to_string(stats_.initial_points) +
-                      " points): cannot start refinement");
+                      std::to_string(stats_.initial_points) + " points): cannot start refinement");
   }
   // Labels spread from cell to neighboring cell (init_cell's `from`); the
   // first cell of each connected sweep is located from scratch.

@@ -179,10 +179,10 @@ class Refiner {
   MeshOptions options_;
   const ProtectionPlan* plan_;  ///< null: RR-7912's R1/R2 on the curves
   std::vector<BallRef> conflicts_;
-  Box3 clip_box_;              ///< oracle box with a margin: rays are clipped to it
-  double min_size_sq_;         ///< termination guard (squared)
-  double facet_shape_bound_;   ///< 4 sin^2(facet angle): min edge^2 / R^2 below it is bad
-  double cell_shape_bound_sq_; ///< beta_3^2
+  Box3 clip_box_;               ///< oracle box with a margin: rays are clipped to it
+  double min_size_sq_;          ///< termination guard (squared)
+  double facet_shape_bound_;    ///< 4 sin^2(facet angle): min edge^2 / R^2 below it is bad
+  double cell_shape_bound_sq_;  ///< beta_3^2
 
   Triangulation tr_;
   std::uint32_t next_stamp_ = 1;
@@ -192,10 +192,10 @@ class Refiner {
   WorstFirstHeap<QueueEntry> cell_queue_;
   std::vector<std::uint64_t> live_;  ///< bit s: the cell stamped s still exists
 
-  std::vector<CurveState> curves_;                 ///< index = CurveId - 1
-  std::vector<CornerInfo> corners_;                ///< index = CornerId - 1
-  std::vector<std::vector<int>> curve_patches_;    ///< index = CurveId - 1
-  std::vector<std::vector<int>> corner_patches_;   ///< index = CornerId - 1
+  std::vector<CurveState> curves_;                ///< index = CurveId - 1
+  std::vector<CornerInfo> corners_;               ///< index = CornerId - 1
+  std::vector<std::vector<int>> curve_patches_;   ///< index = CurveId - 1
+  std::vector<std::vector<int>> corner_patches_;  ///< index = CornerId - 1
 
   // Scratch buffers reused by every insertion (no allocation in the loop).
   std::vector<Cell_handle> zone_cells_;

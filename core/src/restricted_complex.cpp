@@ -93,7 +93,8 @@ bool Refiner::dual_segment(Cell_handle c, int i, Point3& a, Point3& b) const {
   if (tr_.is_infinite(c) && tr_.is_infinite(n)) return false;
   const Vertex_handle v[3] = {c->vertex((i + 1) & 3), c->vertex((i + 2) & 3),
                               c->vertex((i + 3) & 3)};
-  const Point3 q[3] = {to_point3(v[0]->point()), to_point3(v[1]->point()), to_point3(v[2]->point())};
+  const Point3 q[3] = {to_point3(v[0]->point()), to_point3(v[1]->point()),
+                       to_point3(v[2]->point())};
   const double w[3] = {v[0]->point().weight(), v[1]->point().weight(), v[2]->point().weight()};
   Point3 normal = cross(q[1] - q[0], q[2] - q[0]);
   const double len = norm(normal);
@@ -115,7 +116,8 @@ bool Refiner::dual_segment(Cell_handle c, int i, Point3& a, Point3& b) const {
   };
   const double sc = end_of(c, n), sn = end_of(n, c);
   if (std::isnan(sc) || std::isnan(sn)) return false;  // a flat cell without a center
-  double t0 = -std::numeric_limits<double>::infinity(), t1 = std::numeric_limits<double>::infinity();
+  double t0 = -std::numeric_limits<double>::infinity(),
+         t1 = std::numeric_limits<double>::infinity();
   if (!clip_line(origin, normal, clip_box_, t0, t1)) return false;
   const double lo = std::max(std::min(sc, sn), t0), hi = std::min(std::max(sc, sn), t1);
   if (!(lo <= hi)) return false;
@@ -301,9 +303,9 @@ double Refiner::cell_badness(Cell_handle c) const {
   const double sigma = criteria_.cell_size(info.circumcenter);
   if (info.squared_radius > sigma * sigma) badness = info.squared_radius / (sigma * sigma);
   // R5.2: radius-edge ratio <= beta_3.
-  const double e2 = min_squared_edge(
-      to_point3(c->vertex(0)->point()), to_point3(c->vertex(1)->point()),
-      to_point3(c->vertex(2)->point()), to_point3(c->vertex(3)->point()));
+  const double e2 =
+      min_squared_edge(to_point3(c->vertex(0)->point()), to_point3(c->vertex(1)->point()),
+                       to_point3(c->vertex(2)->point()), to_point3(c->vertex(3)->point()));
   const double limit = cell_shape_bound_sq_ * e2;
   if (info.squared_radius > limit) badness = std::max(badness, info.squared_radius / limit);
   return badness;

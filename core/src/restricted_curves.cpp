@@ -112,7 +112,8 @@ void Refiner::insert_protecting_balls() {
     first_ball[j] = balls.size();
     const std::size_t from = curves_[j].info.closed ? 0 : 1;
     for (std::size_t i = from; i + 1 < s.size(); ++i) {
-      balls.push_back({s[i].point, s[i].radius, FeatureDim::kCurve, static_cast<int>(j) + 1, s[i].t});
+      balls.push_back(
+          {s[i].point, s[i].radius, FeatureDim::kCurve, static_cast<int>(j) + 1, s[i].t});
     }
   }
   std::vector<Kernel::Point_3> points;
@@ -120,7 +121,8 @@ void Refiner::insert_protecting_balls() {
   std::vector<std::size_t> order(balls.size());
   for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
   using SortTraits =
-      CGAL::Spatial_sort_traits_adapter_3<Kernel, CGAL::Pointer_property_map<Kernel::Point_3>::type>;
+      CGAL::Spatial_sort_traits_adapter_3<Kernel,
+                                          CGAL::Pointer_property_map<Kernel::Point_3>::type>;
   CGAL::spatial_sort(order.begin(), order.end(), SortTraits(CGAL::make_property_map(points)));
 
   std::vector<Vertex_handle> vertex(balls.size());

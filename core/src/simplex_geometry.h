@@ -79,8 +79,8 @@ inline double min_squared_edge(Point3 a, Point3 b, Point3 c) {
 }
 
 inline double min_squared_edge(Point3 a, Point3 b, Point3 c, Point3 d) {
-  return std::min({min_squared_edge(a, b, c), squared_norm(d - a), squared_norm(d - b),
-                   squared_norm(d - c)});
+  return std::min(
+      {min_squared_edge(a, b, c), squared_norm(d - a), squared_norm(d - b), squared_norm(d - c)});
 }
 
 }  // namespace rdmesh::detail

@@ -26,9 +26,9 @@ enum class FeatureDim : std::int8_t { kCorner = 0, kCurve = 1, kPatch = 2, kVolu
 /// R3 read it.
 struct VertexInfo {
   FeatureDim dim = FeatureDim::kVolume;
-  int feature = 0;  ///< CornerId / CurveId / PatchId value for dim 0 / 1 / 2
-  double t = 0.0;   ///< curve parameter when dim == kCurve
-  int index = -1;   ///< scratch: output index during extraction
+  int feature = 0;           ///< CornerId / CurveId / PatchId value for dim 0 / 1 / 2
+  double t = 0.0;            ///< curve parameter when dim == kCurve
+  int index = -1;            ///< scratch: output index during extraction
   double ball_weight = 0.0;  ///< squared radius of its protecting ball (0: none)
 };
 
@@ -74,8 +74,8 @@ struct CellInfo {
   int label = 0;                ///< SubdomainId of the circumcenter (0 outside, infinite cells)
   Point3 circumcenter;          ///< finite cells only
   double squared_radius = 0.0;  ///< finite cells only
-  std::array<int, 4> facet_patch{};          ///< PatchId value of facet i, 0 = not restricted
-  SurfaceCenters surface_center;             ///< center of facet i's surface Delaunay ball
+  std::array<int, 4> facet_patch{};  ///< PatchId value of facet i, 0 = not restricted
+  SurfaceCenters surface_center;     ///< center of facet i's surface Delaunay ball
   /// A crossing of facet `crossing_facet`'s dual edge found while labeling this
   /// cell from the neighbor with stamp `crossing_with` (held in facet_patch and
   /// surface_center until update_facet() takes it); -1: none.
@@ -98,8 +98,9 @@ struct NoHiddenPoints {
   const_iterator end() const { return nullptr; }
 };
 
-using Vb = CGAL::Triangulation_vertex_base_with_info_3<VertexInfo, Kernel,
-                                                        CGAL::Regular_triangulation_vertex_base_3<Kernel>>;
+using Vb =
+    CGAL::Triangulation_vertex_base_with_info_3<VertexInfo, Kernel,
+                                                CGAL::Regular_triangulation_vertex_base_3<Kernel>>;
 using Cb = CGAL::Triangulation_cell_base_with_info_3<
     CellInfo, Kernel,
     CGAL::Regular_triangulation_cell_base_3<Kernel, CGAL::Triangulation_cell_base_3<Kernel>,
@@ -110,9 +111,7 @@ using Cell_handle = Triangulation::Cell_handle;
 using Vertex_handle = Triangulation::Vertex_handle;
 using Weighted_point = Triangulation::Weighted_point;
 
-inline Point3 to_point3(const Weighted_point& p) {
-  return {p.x(), p.y(), p.z()};
-}
+inline Point3 to_point3(const Weighted_point& p) { return {p.x(), p.y(), p.z()}; }
 inline Weighted_point to_weighted(const Point3& p) {
   return Weighted_point(Kernel::Point_3(p.x, p.y, p.z), 0.0);
 }

@@ -17,12 +17,10 @@
 #include <string>
 
 #include "element_nodes.h"
-#include "element_nodes.h"
 #include "mesh_labels.h"
 #include "msh_tokens.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/mesh_writers.h"
-#include "rdmesh/second_order.h"
 #include "rdmesh/second_order.h"
 
 namespace rdmesh {
@@ -273,8 +271,7 @@ void write_elements(std::ostream& out, const TetMesh& mesh, const Levels& levels
     long long next_tag = 1;
     // Tets and triangles first: a mesh without features keeps its element tags.
     if (is_second_order(mesh)) {  // 10-node tets, 6-node triangles, 3-node lines
-      write_element_blocks(t, 3, 11,
-                           io_detail::tet10_elements(mesh, io_detail::Tet10Order::kGmsh),
+      write_element_blocks(t, 3, 11, io_detail::tet10_elements(mesh, io_detail::Tet10Order::kGmsh),
                            levels[3], next_tag);
       write_element_blocks(t, 2, 9, io_detail::triangle6_elements(mesh), levels[2], next_tag);
       write_element_blocks(t, 1, 8, io_detail::line3_elements(mesh), levels[1], next_tag);
@@ -329,7 +326,9 @@ void write_partitioned_entities(std::ostream& out, const TetMesh& mesh,
   t.end_line();
   for (int dim = 0; dim < 4; ++dim) t.z(static_cast<long long>(parts[dim].size()));
   t.end_line();
-  const auto box = [](const std::array<double, 6>& b) { return std::vector<double>(b.begin(), b.end()); };
+  const auto box = [](const std::array<double, 6>& b) {
+    return std::vector<double>(b.begin(), b.end());
+  };
   for (int dim = 0; dim < 4; ++dim) {
     for (const PartEntity& e : parts[dim]) {
       t.i(e.tag);

@@ -99,8 +99,8 @@ std::string format_summary(const QualityReport& r) {
   if (surface) {
     s += printf_string("Surface mesh: %zu vertices, %zu triangles\n", r.vertices, r.triangles);
   } else {
-    s += printf_string("Mesh: %zu vertices, %zu tetrahedra, %zu boundary triangles\n",
-                       r.vertices, r.tets, r.triangles);
+    s += printf_string("Mesh: %zu vertices, %zu tetrahedra, %zu boundary triangles\n", r.vertices,
+                       r.tets, r.triangles);
     s += printf_string("Dihedral angles: min %.2f deg, max %.2f deg; max radius-edge %.3f\n",
                        r.min_dihedral_deg, r.max_dihedral_deg, r.max_radius_edge);
   }

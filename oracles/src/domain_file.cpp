@@ -273,8 +273,9 @@ class Parser {
     std::vector<std::pair<std::string, const Curve*>> named;
     std::vector<std::pair<double, double>> ranges;
     for (const auto& spec : out) {
-      checked([&] { detail::check_no_self_overlap(*spec.curve, spec.t_begin, spec.t_end, diagonal_); },
-              "curve '" + spec.name + "': ");
+      checked(
+          [&] { detail::check_no_self_overlap(*spec.curve, spec.t_begin, spec.t_end, diagonal_); },
+          "curve '" + spec.name + "': ");
       named.emplace_back(spec.name, spec.curve.get());
       ranges.emplace_back(spec.t_begin, spec.t_end);
     }
@@ -429,7 +430,7 @@ class Parser {
 
   std::string origin_;
   const ExternalDefinitions* external_;  ///< null: a domain file
-  double diagonal_ = 0;  ///< of the bbox
+  double diagonal_ = 0;                  ///< of the bbox
   std::vector<ImplicitOracle::Function> functions_;
   std::vector<std::string> names_;
   std::vector<ImplicitOracleOptions::BatchFunction> batch_;  ///< external functions' batches

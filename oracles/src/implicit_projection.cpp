@@ -3,7 +3,6 @@
 // function's zero set, and on each crease where two functions vanish; each is
 // verified by the labels around it, the closest verified one wins.
 #include <cmath>
-
 #include <string>
 
 #include "rdmesh/errors.h"

@@ -11,9 +11,9 @@
 //    farthest-point sampling (spread out, deterministic). A handful of points is
 //    not enough: the Delaunay triangulation of 8 points on a torus has no
 //    Voronoi vertex inside the tube, so the refinement would see no restricted
-//    facet at all; a sample spaced at a few grid cells captures the topology. A component with fewer
-//    than three crossings (smaller than a grid cell) is enriched with crossings
-//    of grid-parallel segments shifted by fractions of a cell.
+//    facet at all; a sample spaced at a few grid cells captures the topology. A component with
+//    fewer than three crossings (smaller than a grid cell) is enriched with crossings of
+//    grid-parallel segments shifted by fractions of a cell.
 
 #include <algorithm>
 #include <limits>
@@ -273,9 +273,10 @@ void ImplicitOracle::sample_box() {
     const auto [a, b] = sides(key);
     const int k = key % (n_functions + 1);
     int same_pair = 0;
-    for (int other = 1; other <= listed; ++other) same_pair += sides(key_of_patch_[other]) == sides(key);
-    std::string name = (a == 0 ? "outside" : subdomain_infos_[a - 1].name) + "/" +
-                       subdomain_infos_[b - 1].name;
+    for (int other = 1; other <= listed; ++other)
+      same_pair += sides(key_of_patch_[other]) == sides(key);
+    std::string name =
+        (a == 0 ? "outside" : subdomain_infos_[a - 1].name) + "/" + subdomain_infos_[b - 1].name;
     if (same_pair > 1) name += ":" + (k < n_functions ? function_names_[k] : std::string("box"));
     patches_.push_back({PatchId(id), name, SubdomainId(a), SubdomainId(b)});
   }

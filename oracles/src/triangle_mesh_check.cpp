@@ -1,5 +1,7 @@
 // Exact geometric checks of triangle meshes (CGAL's filtered exact predicates):
 // coordinates and degenerate triangles (validate_soup), self-intersections.
+#include "rdmesh/triangle_mesh_check.h"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/intersections.h>
 
@@ -8,7 +10,6 @@
 
 #include "rdmesh/detail/triangle_bvh.h"
 #include "rdmesh/errors.h"
-#include "rdmesh/triangle_mesh_check.h"
 
 namespace rdmesh {
 namespace {
@@ -44,8 +45,10 @@ bool intersect(const TriangleSoup& soup, const std::array<int, 3>& t, const std:
   if (shared == 2) {  // folded onto each other: coplanar with the free corners on one side
     int a = -1, b = -1, c = -1, d = -1;
     for (int i = 0; i < 3; ++i) {
-      if (ti[i] < 0) c = t[i];
-      else (a < 0 ? a : b) = t[i];
+      if (ti[i] < 0)
+        c = t[i];
+      else
+        (a < 0 ? a : b) = t[i];
       if (ui[i] < 0) d = u[i];
     }
     const P pa = pt(a), pb = pt(b), pc = pt(c), pd = pt(d);
@@ -68,8 +71,11 @@ void validate_soup(const TriangleSoup& soup, const std::string& file) {
   for (std::size_t i = 0; i < soup.points.size(); ++i) {
     const Point3& p = soup.points[i];
     for (double c : {p.x, p.y, p.z}) {
-      if (!std::isfinite(c)) throw InputError(file, "vertex " + std::to_string(i) + " has a non-finite coordinate");
-      if (std::abs(c) > 1e100) throw InputError(file, "vertex " + std::to_string(i) + " has a coordinate above 1e100: " + str(p));
+      if (!std::isfinite(c))
+        throw InputError(file, "vertex " + std::to_string(i) + " has a non-finite coordinate");
+      if (std::abs(c) > 1e100)
+        throw InputError(
+            file, "vertex " + std::to_string(i) + " has a coordinate above 1e100: " + str(p));
     }
   }
   const int n = static_cast<int>(soup.points.size());
@@ -78,7 +84,8 @@ void validate_soup(const TriangleSoup& soup, const std::string& file) {
     for (int v : tri) {
       if (v < 0 || v >= n) {
         throw InputError(file, "triangle " + std::to_string(t) + ": vertex index " +
-                                   std::to_string(v) + " out of range [0, " + std::to_string(n) + ")");
+                                   std::to_string(v) + " out of range [0, " + std::to_string(n) +
+                                   ")");
       }
     }
     if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) {

@@ -19,7 +19,7 @@ namespace rdmesh {
 namespace {
 
 struct SharpEdge {
-  int u, v;       // vertex ids
+  int u, v;         // vertex ids
   int left, right;  // the triangles on both sides
 };
 

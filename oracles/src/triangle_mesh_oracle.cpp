@@ -55,7 +55,7 @@ TriangleMeshOracle::TriangleMeshOracle(TriangleSoup soup, const std::string& fil
 TriangleMeshOracle::~TriangleMeshOracle() = default;
 
 std::unique_ptr<TriangleMeshOracle> TriangleMeshOracle::from_file(const std::string& path,
-                                                                 TriangleMeshOptions options) {
+                                                                  TriangleMeshOptions options) {
   return std::make_unique<TriangleMeshOracle>(read_triangle_mesh(path), path, options);
 }
 
@@ -68,8 +68,9 @@ void TriangleMeshOracle::build_subdomains(int count) {
     const auto& tri = mesh_.triangles[t];
     if (first_vertex[c] < 0) first_vertex[c] = tri[0];
     const Point3 o = mesh_.points[first_vertex[c]];
-    component_volume_[c] += dot(mesh_.points[tri[0]] - o,
-                                cross(mesh_.points[tri[1]] - o, mesh_.points[tri[2]] - o)) / 6;
+    component_volume_[c] +=
+        dot(mesh_.points[tri[0]] - o, cross(mesh_.points[tri[1]] - o, mesh_.points[tri[2]] - o)) /
+        6;
   }
   // Containment: which components contain a vertex of component c.
   std::vector<std::vector<int>> containers(count);

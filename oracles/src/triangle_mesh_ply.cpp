@@ -6,8 +6,8 @@
 // property is read and discarded, so files with normals, colours or extra
 // elements load.
 #include <algorithm>
-#include <cmath>
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 
@@ -234,7 +234,8 @@ TriangleSoup parse_ply(std::istream& in, const std::string& file) {
       }
       if (is_vertex) soup.points.push_back(p);
       if (!is_face) continue;
-      if (ids.size() < 3) throw InputError(file, "face " + std::to_string(i) + " has fewer than 3 vertices");
+      if (ids.size() < 3)
+        throw InputError(file, "face " + std::to_string(i) + " has fewer than 3 vertices");
       for (long long id : ids) {
         if (id < 0 || id >= static_cast<long long>(soup.points.size())) {
           throw InputError(file, "face " + std::to_string(i) + ": vertex index " +

@@ -30,7 +30,7 @@ Contact segment_triangle(const Point3& p, const Point3& q, const Point3& a, cons
   if (sp == sq && sp != 0) return Contact::kNone;
   if (sp == 0 && sq == 0) return inclusive ? Contact::kNone : Contact::kDegenerate;
   const int e1 = orient(p, q, a, b), e2 = orient(p, q, b, c), e3 = orient(p, q, c, a);
-  const bool neg = e1 < 0 || e2 < 0 || e3 < 0, pos = e1 > 0 || e2 > 0 || e3 > 0;
+  const bool neg = e1 < 0 || e2 < 0 || e3<0, pos = e1> 0 || e2 > 0 || e3 > 0;
   if (neg && pos) return Contact::kNone;
   if (inclusive) return Contact::kCross;
   if (e1 == 0 || e2 == 0 || e3 == 0 || sp == 0 || sq == 0) return Contact::kDegenerate;
@@ -103,7 +103,8 @@ SubdomainId TriangleMeshOracle::locate(const Point3& p) const {
     if (gaps[k] < gaps[first]) first = k;
   }
   bool ok = false;
-  for (int i = 0; i < 12 && !ok; ++i) ok = ray_parity(p, i == 0 ? first : (first + i) % 12, -1, false, inside);
+  for (int i = 0; i < 12 && !ok; ++i)
+    ok = ray_parity(p, i == 0 ? first : (first + i) % 12, -1, false, inside);
   if (!ok) ray_parity(p, first, -1, true, inside);
   return SubdomainId(innermost(inside) + 1);
 }
@@ -156,8 +157,8 @@ std::optional<Point3> TriangleMeshOracle::project(const Point3& x, PatchId patch
                 [&](int t, double& bound) {
                   if (triangle_patch_[t] != patch) return;
                   const auto& tri = mesh_.triangles[t];
-                  const Point3 y = closest_on_triangle(x, mesh_.points[tri[0]], mesh_.points[tri[1]],
-                                                       mesh_.points[tri[2]]);
+                  const Point3 y = closest_on_triangle(x, mesh_.points[tri[0]],
+                                                       mesh_.points[tri[1]], mesh_.points[tri[2]]);
                   const double d2 = squared_norm(y - x);
                   if (d2 < bound) {
                     bound = d2;

@@ -132,15 +132,17 @@ TriangleSoup parse_off(std::istream& in, const std::string& file) {
   TriangleSoup soup;
   soup.points.reserve(static_cast<std::size_t>(std::min(nv, 1LL << 24)));
   for (long long i = 0; i < nv; ++i) {
-    if (!r.next(tok)) throw InputError(file, "file ends after " + std::to_string(i) + " of " +
-                                                 std::to_string(nv) + " vertices");
+    if (!r.next(tok))
+      throw InputError(
+          file, "file ends after " + std::to_string(i) + " of " + std::to_string(nv) + " vertices");
     if (tok.size() < 3) r.fail("a vertex needs 3 coordinates");
     soup.points.push_back({r.real(tok[0]), r.real(tok[1]), r.real(tok[2])});
   }
   std::vector<long long> ids;
   for (long long i = 0; i < nf; ++i) {
-    if (!r.next(tok)) throw InputError(file, "file ends after " + std::to_string(i) + " of " +
-                                                 std::to_string(nf) + " faces");
+    if (!r.next(tok))
+      throw InputError(
+          file, "file ends after " + std::to_string(i) + " of " + std::to_string(nf) + " faces");
     const long long k = r.integer(tok[0]);
     if (k < 0 || k > static_cast<long long>(tok.size()) - 1) {  // k + 1 overflows for huge k
       r.fail("face with " + std::to_string(tok.size() - 1) + " indices, expected " +
@@ -233,8 +235,8 @@ TriangleSoup read_triangle_mesh(const std::string& path) {
   if (ext == ".obj") parse = parse_obj;
   if (ext == ".ply") parse = parse_ply;
   if (!parse) {
-    throw InputError(path, "unknown triangle mesh extension '" + ext +
-                               "' (expected .off, .stl, .obj or .ply)");
+    throw InputError(
+        path, "unknown triangle mesh extension '" + ext + "' (expected .off, .stl, .obj or .ply)");
   }
   check_input_file(path);
   std::ifstream in(path, std::ios::binary);

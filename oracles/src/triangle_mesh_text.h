@@ -72,7 +72,9 @@ class LineReader {
   std::istream& stream() { return in_; }
 
  private:
-  static bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+  static bool is_space(char c) {
+    return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
+  }
 
   std::istream& in_;
   std::string file_;

@@ -16,9 +16,9 @@ std::string str(const Point3& p) {
 }
 
 struct HalfEdge {
-  int lo, hi;   // sorted vertex ids of the edge
-  int tri, k;   // edge k of triangle tri
-  bool forward; // traversed lo -> hi by the triangle
+  int lo, hi;    // sorted vertex ids of the edge
+  int tri, k;    // edge k of triangle tri
+  bool forward;  // traversed lo -> hi by the triangle
   auto key() const { return std::make_pair(lo, hi); }
 };
 
@@ -54,8 +54,8 @@ TriangleMeshTopology orient_triangle_mesh(TriangleSoup& soup, const std::string&
     while (j < h.size() && h[j].key() == h[i].key()) ++j;
     if (j - i > 2) {
       throw InputError(file, "non-manifold edge " + str(soup.points[h[i].lo]) + " - " +
-                                 str(soup.points[h[i].hi]) + " shared by " +
-                                 std::to_string(j - i) + " triangles");
+                                 str(soup.points[h[i].hi]) + " shared by " + std::to_string(j - i) +
+                                 " triangles");
     }
     if (j - i == 1) {
       ++borders;

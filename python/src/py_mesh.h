@@ -13,9 +13,9 @@ namespace rdmesh::python {
 
 struct PyMesh {
   TetMesh mesh;
-  std::string report_json;  ///< run_report(), parsed by Python on access
-  std::string input;        ///< the input file, never overwritten by write(); empty: none
-  bool failed = false;      ///< kept with keep_bad_mesh although the run failed
+  std::string report_json;            ///< run_report(), parsed by Python on access
+  std::string input;                  ///< the input file, never overwritten by write(); empty: none
+  bool failed = false;                ///< kept with keep_bad_mesh although the run failed
   std::vector<std::string> warnings;  ///< run::run_warnings
 };
 

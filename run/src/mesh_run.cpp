@@ -50,8 +50,7 @@ std::string failure_reason(const Options& opt, const MeshRun& run) {
 
 nlohmann::json run_report(const Options& opt, const DomainOracle& oracle, const MeshRun& run) {
   return report_json(opt, run.criteria, oracle, run.result.stats, run.result.exudation,
-                     run.result.improvement, run.quality,
-                     run.fidelity, run.times, run.fem);
+                     run.result.improvement, run.quality, run.fidelity, run.times, run.fem);
 }
 
 void apply_fem(const Options& opt, const AppliedSizes& sizes, const DomainOracle& oracle,

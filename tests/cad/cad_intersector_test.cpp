@@ -15,9 +15,9 @@
 #include <vector>
 
 #include "oracles/oracle_conformance.h"
-#include "same_answers_on_threads.h"
 #include "rdmesh/cad_oracle.h"
 #include "rdmesh/cad_reference.h"
+#include "same_answers_on_threads.h"
 #include "shared_data.h"
 
 namespace rdmesh {
@@ -276,12 +276,11 @@ TEST(CadSurfaces, EvaluateAsTheExactSurfaces) {
                         "gmsh_t20_data_component8.step", "gmsh_wrenchnut.stp"},
                        [&](const char* file, const CadOracle& oracle, CadReference& ref) {
                          const CadReference::SurfaceCheck c = ref.check_surfaces(25);
-                         std::printf("%s: %d faces (%d cached), largest distance %.3g, "
-                                     "derivative error %.3g\n",
-                                     file, c.faces, c.cached_faces, c.max_distance,
-                                     c.max_derivative_error);
-                         EXPECT_LE(c.max_distance, 1e-9 * oracle.bounding_box().diagonal())
-                             << file;
+                         std::printf(
+                             "%s: %d faces (%d cached), largest distance %.3g, "
+                             "derivative error %.3g\n",
+                             file, c.faces, c.cached_faces, c.max_distance, c.max_derivative_error);
+                         EXPECT_LE(c.max_distance, 1e-9 * oracle.bounding_box().diagonal()) << file;
                          EXPECT_LE(c.max_derivative_error, 1e-8) << file;
                          cached += c.cached_faces;
                        })) {
@@ -358,7 +357,8 @@ TEST(CadOtherPatches, MatchTheNearestOtherFace) {
     for (const CurveInfo& c : oracle->curves()) {
       if (c.id.value % 3 != 0) continue;  // a third of the curves: the reference is slow
       const Point3 v{g(rng), g(rng), g(rng)};
-      const Point3 p = oracle->curve(c.id).point(0.5 * (c.t_begin + c.t_end)) + (0.005 * diag / norm(v)) * v;
+      const Point3 p =
+          oracle->curve(c.id).point(0.5 * (c.t_begin + c.t_end)) + (0.005 * diag / norm(v)) * v;
       double expected = limit;
       for (const PatchInfo& patch : oracle->patches()) {
         if (std::find(c.patches.begin(), c.patches.end(), patch.id) != c.patches.end()) continue;

@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "oracles/oracle_conformance.h"
+#include "rdmesh/errors.h"
 #include "same_answers_on_threads.h"
 #include "shared_data.h"
-#include "rdmesh/errors.h"
 
 namespace rdmesh {
 namespace {

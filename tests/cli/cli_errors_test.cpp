@@ -8,7 +8,8 @@
 namespace rdmesh::test {
 namespace {
 
-const char* kSphere = R"({"bbox": [-1.2,-1.2,-1.2,1.2,1.2,1.2], "functions": {"s": "x^2+y^2+z^2-1"}})";
+const char* kSphere =
+    R"({"bbox": [-1.2,-1.2,-1.2,1.2,1.2,1.2], "functions": {"s": "x^2+y^2+z^2-1"}})";
 
 struct BadInput {
   const char* name;
@@ -40,18 +41,20 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(
         BadInput{"missing_file", nullptr, "", "in.json"},
         BadInput{"malformed_json", R"({"bbox": [0,0,0,1,1,1], )", "", "in.json"},
-        BadInput{"unknown_key", R"({"bbox": [-1,-1,-1,1,1,1], "functions": {"s": "x"}, "colour": 3})",
-                 "", "colour"},
-        BadInput{"syntax_error",
-                 R"({"bbox": [-1,-1,-1,1,1,1], "functions": {"s": "x^2 + * y"}})", "", "in.json"},
+        BadInput{"unknown_key",
+                 R"({"bbox": [-1,-1,-1,1,1,1], "functions": {"s": "x"}, "colour": 3})", "",
+                 "colour"},
+        BadInput{"syntax_error", R"({"bbox": [-1,-1,-1,1,1,1], "functions": {"s": "x^2 + * y"}})",
+                 "", "in.json"},
         BadInput{"unknown_variable",
                  R"({"bbox": [-1,-1,-1,1,1,1], "functions": {"s": "x^2 + w - 1"}})", "", "w"},
         BadInput{"empty_subdomain",
                  R"({"bbox": [-1,-1,-1,1,1,1], "functions": {"s": "x^2+y^2+z^2+1"}})", "",
                  "matches no point"},
-        BadInput{"negative_size_in_file",
-                 R"({"bbox": [-1.2,-1.2,-1.2,1.2,1.2,1.2], "functions": {"s": "x^2+y^2+z^2-1"}, "size": -0.1})",
-                 "", "size"},
+        BadInput{
+            "negative_size_in_file",
+            R"({"bbox": [-1.2,-1.2,-1.2,1.2,1.2,1.2], "functions": {"s": "x^2+y^2+z^2-1"}, "size": -0.1})",
+            "", "size"},
         BadInput{"negative_size_option", kSphere, "--size -0.1", "size"},
         BadInput{"nan_size_option", kSphere, "--size nan", "size"},
         BadInput{"zero_facet_distance", kSphere, "--facet-distance 0", "facet distance"},

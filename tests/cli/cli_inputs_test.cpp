@@ -2,7 +2,6 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
-
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.h"
@@ -21,8 +20,9 @@ TEST(CliInputs, TriangleMeshWithFeatureAngle) {
   RDMESH_REQUIRE_SHARED_DATA(fandisk, "mesh/cgal_fandisk.off");
   const std::string kFandisk = "'" + fandisk + "'";
   ASSERT_EQ(run_cli(kFandisk + " -o a.mesh -q --report a.json", dir.path()).exit_code, 0);
-  ASSERT_EQ(run_cli(kFandisk + " -o b.mesh -q --feature-angle 30 --report b.json", dir.path()).exit_code,
-            0);
+  ASSERT_EQ(
+      run_cli(kFandisk + " -o b.mesh -q --feature-angle 30 --report b.json", dir.path()).exit_code,
+      0);
   const nlohmann::json a = read_json(dir.file("a.json")), b = read_json(dir.file("b.json"));
   EXPECT_GT(a.at("curves").size(), 0u);
   // A lower threshold makes more edges sharp: at least as many curves and patches.

@@ -18,8 +18,10 @@ class CappedCylinderOracle final : public DomainOracle {
   CappedCylinderOracle(double radius, double half_height) : r_(radius), h_(half_height) {
     for (double z : {h_, -h_}) {
       rims_.push_back(std::make_shared<ParametricCurve>(
-          [this, z](double t) { return Point3{r_ * std::cos(t), r_ * std::sin(t), z}; }, 0.0,
-          2 * M_PI));
+          [this, z](double t) {
+            return Point3{r_ * std::cos(t), r_ * std::sin(t), z};
+          },
+          0.0, 2 * M_PI));
     }
   }
 
@@ -50,9 +52,11 @@ class CappedCylinderOracle final : public DomainOracle {
     std::vector<Point3> points;
     for (int k = 0; k < 6; ++k) {
       const double t = 2 * M_PI * (k + 0.5) / 6;
-      if (patch.value == 1) points.push_back({r_ * std::cos(t), r_ * std::sin(t), (k % 3 - 1) * 0.5 * h_});
+      if (patch.value == 1)
+        points.push_back({r_ * std::cos(t), r_ * std::sin(t), (k % 3 - 1) * 0.5 * h_});
       if (patch.value > 1) {
-        points.push_back({0.5 * r_ * std::cos(t), 0.5 * r_ * std::sin(t), patch.value == 2 ? h_ : -h_});
+        points.push_back(
+            {0.5 * r_ * std::cos(t), 0.5 * r_ * std::sin(t), patch.value == 2 ? h_ : -h_});
       }
     }
     return points;
@@ -74,8 +78,22 @@ class CappedCylinderOracle final : public DomainOracle {
   double tolerance() const override { return 1e-12; }
   std::vector<CornerInfo> corners() const override { return {}; }
   std::vector<CurveInfo> curves() const override {
-    return {{CurveId{1}, "top rim", true, 0.0, 2 * M_PI, CornerId{0}, CornerId{0}, {PatchId{1}, PatchId{2}}},
-            {CurveId{2}, "bottom rim", true, 0.0, 2 * M_PI, CornerId{0}, CornerId{0}, {PatchId{1}, PatchId{3}}}};
+    return {{CurveId{1},
+             "top rim",
+             true,
+             0.0,
+             2 * M_PI,
+             CornerId{0},
+             CornerId{0},
+             {PatchId{1}, PatchId{2}}},
+            {CurveId{2},
+             "bottom rim",
+             true,
+             0.0,
+             2 * M_PI,
+             CornerId{0},
+             CornerId{0},
+             {PatchId{1}, PatchId{3}}}};
   }
   const Curve& curve(CurveId id) const override {
     if (id.value < 1 || id.value > 2) throw OracleError("no such curve");

@@ -84,7 +84,9 @@ TEST(CriteriaLimits, EstimateFollowsTheDocumentedFormula) {
 TEST(CriteriaLimits, EstimateAboveTheLimitIsRefusedWithTheWayToRaiseIt) {
   EXPECT_EQ(refusal(uniform(0.01)), "");  // 5e6 tetrahedra
   const std::string m = refusal(uniform(0.002));
-  EXPECT_NE(m.find("about 6.28e+08 elements (6.25e+08 tetrahedra, 3e+06 boundary"), std::string::npos) << m;
+  EXPECT_NE(m.find("about 6.28e+08 elements (6.25e+08 tetrahedra, 3e+06 boundary"),
+            std::string::npos)
+      << m;
   EXPECT_NE(m.find("limit of 5e+07"), std::string::npos) << m;
   EXPECT_NE(m.find("--max-elements"), std::string::npos) << m;
   EXPECT_EQ(refusal(uniform(0.002), 1e9), "");

@@ -16,11 +16,11 @@
 
 #include "capped_cylinder_oracle.h"
 #include "mesh_checks.h"
-#include "test_domains.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/implicit_oracle.h"
 #include "rdmesh/mesh_measures.h"
 #include "rdmesh/mesher.h"
+#include "test_domains.h"
 
 namespace rdmesh {
 namespace {
@@ -70,7 +70,8 @@ double min_dihedral_deg(const TetMesh& mesh) {
   double worst = 180;
   for (const auto& t : mesh.tets) {
     const auto& v = mesh.vertices;
-    for (double a : dihedral_angles_deg(v[t[0]], v[t[1]], v[t[2]], v[t[3]])) worst = std::min(worst, a);
+    for (double a : dihedral_angles_deg(v[t[0]], v[t[1]], v[t[2]], v[t[3]]))
+      worst = std::min(worst, a);
   }
   return worst;
 }
@@ -94,15 +95,17 @@ Runs mesh_both(const DomainOracle& oracle, const Criteria& criteria, bool pertur
 
 /// Everything exudation promises, for one domain. `distance_to_boundary`: the
 /// distance of a point to the domain's surfaces.
-void expect_exudation_keeps_the_mesh(const Runs& r, const DomainOracle& oracle,
-                                     const Criteria& criteria,
-                                     const std::function<double(const Point3&)>& distance_to_boundary) {
+void expect_exudation_keeps_the_mesh(
+    const Runs& r, const DomainOracle& oracle, const Criteria& criteria,
+    const std::function<double(const Point3&)>& distance_to_boundary) {
   const ExudationStats& s = r.on.exudation;
   ASSERT_TRUE(s.ran);
-  std::printf("exudation: min dihedral %.2f -> %.2f deg, %zu/%zu moves, %.3f s, tets < 10 deg: %zu -> %zu\n",
-              s.min_dihedral_before_deg, s.min_dihedral_after_deg, s.moves_accepted,
-              s.moves_tried, s.seconds, s.histogram_before[0] + s.histogram_before[1],
-              s.histogram_after[0] + s.histogram_after[1]);
+  std::printf(
+      "exudation: min dihedral %.2f -> %.2f deg, %zu/%zu moves, %.3f s, tets < 10 deg: %zu -> "
+      "%zu\n",
+      s.min_dihedral_before_deg, s.min_dihedral_after_deg, s.moves_accepted, s.moves_tried,
+      s.seconds, s.histogram_before[0] + s.histogram_before[1],
+      s.histogram_after[0] + s.histogram_after[1]);
   EXPECT_FALSE(r.off.exudation.ran);
   EXPECT_GT(s.moves_accepted, 0u);
   EXPECT_LE(s.moves_accepted, s.moves_tried);
@@ -170,12 +173,11 @@ TEST(Exudation, NestedSpheresKeepTheirInterfaceAndBothLabels) {
   expect_exudation_keeps_the_mesh(r, oracle, criteria, [](const Point3& p) {
     return std::min(std::abs(norm(p) - 0.5), std::abs(norm(p) - 1.0));
   });
-  const std::set<int> labels(
-      [&] {
-        std::set<int> l;
-        for (SubdomainId s : r.on.mesh.tet_subdomain) l.insert(s.value);
-        return l;
-      }());
+  const std::set<int> labels([&] {
+    std::set<int> l;
+    for (SubdomainId s : r.on.mesh.tet_subdomain) l.insert(s.value);
+    return l;
+  }());
   EXPECT_EQ(labels, (std::set<int>{1, 2}));
 }
 
@@ -199,9 +201,10 @@ TEST(Exudation, CappedCylinderKeepsItsSharpRims) {
   criteria.facet_distance = 0.01;
   const Runs r = mesh_both(oracle, criteria);
   const ExudationStats& s = r.on.exudation;
-  std::printf("exudation (capped cylinder): min dihedral %.2f -> %.2f deg, tets < 5 deg: %zu -> %zu\n",
-              s.min_dihedral_before_deg, s.min_dihedral_after_deg, s.histogram_before[0],
-              s.histogram_after[0]);
+  std::printf(
+      "exudation (capped cylinder): min dihedral %.2f -> %.2f deg, tets < 5 deg: %zu -> %zu\n",
+      s.min_dihedral_before_deg, s.min_dihedral_after_deg, s.histogram_before[0],
+      s.histogram_after[0]);
   EXPECT_GT(s.moves_accepted, 0u);
   EXPECT_GE(s.min_dihedral_after_deg, s.min_dihedral_before_deg);
   EXPECT_LE(s.histogram_after[0], s.histogram_before[0]);

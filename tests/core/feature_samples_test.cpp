@@ -6,10 +6,10 @@
 #include <set>
 
 #include "mesh_checks.h"
-#include "test_domains.h"
 #include "rdmesh/domain_file.h"
 #include "rdmesh/mesh_measures.h"
 #include "rdmesh/mesher.h"
+#include "test_domains.h"
 
 namespace rdmesh {
 namespace {
@@ -22,7 +22,8 @@ struct Meshed {
 
 Meshed mesh_sample(const std::string& name, double h, FeatureMethod method) {
   Meshed m{load_domain_file(std::string(RDMESH_SOURCE_DIR) + "/samples/" + name),
-           test::uniform_criteria(h), {}};
+           test::uniform_criteria(h),
+           {}};
   MeshOptions options;
   options.features = method;
   m.result = generate_mesh(*m.domain.oracle, m.criteria, options);
@@ -132,9 +133,11 @@ TEST_P(FeatureSamples, CylinderThroughBallHasInterfaceCurves) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Methods, FeatureSamples,
-                         testing::Values(FeatureMethod::kProtectingBalls, FeatureMethod::kRefineEdges),
+                         testing::Values(FeatureMethod::kProtectingBalls,
+                                         FeatureMethod::kRefineEdges),
                          [](const auto& info) {
-                           return info.param == FeatureMethod::kProtectingBalls ? "protect" : "refine";
+                           return info.param == FeatureMethod::kProtectingBalls ? "protect"
+                                                                                : "refine";
                          });
 
 TEST(FeatureSamples, AngleViolatingWedgeIsMeshedWithProtectingBalls) {
@@ -156,7 +159,8 @@ TEST(FeatureSamples, AngleViolatingWedgeWithRefineEdgesEndsByTheGuard) {
   // satisfies R1-R4, and only the minimum-size guard ends it.
   // (A coarse minimum size keeps the cascade short: the guard fires anyway.)
   Meshed m{load_domain_file(std::string(RDMESH_SOURCE_DIR) + "/samples/wedge.json"),
-           test::uniform_criteria(0.15), {}};
+           test::uniform_criteria(0.15),
+           {}};
   m.criteria.min_size = 0.005;
   MeshOptions options;
   options.features = FeatureMethod::kRefineEdges;

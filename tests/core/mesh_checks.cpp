@@ -22,8 +22,8 @@ Point3 circumcenter(Point3 a, Point3 b, Point3 c, Point3 d) {
   // Solve 2 [b-a; c-a; d-a] x = [|b|^2-|a|^2, ...] relative to a, by Cramer's rule.
   const Point3 u = b - a, v = c - a, w = d - a;
   const double det = 2.0 * dot(u, cross(v, w));
-  const Point3 num = squared_norm(u) * cross(v, w) + squared_norm(v) * cross(w, u) +
-                     squared_norm(w) * cross(u, v);
+  const Point3 num =
+      squared_norm(u) * cross(v, w) + squared_norm(v) * cross(w, u) + squared_norm(w) * cross(u, v);
   return a + (1.0 / det) * num;
 }
 
@@ -59,7 +59,8 @@ void expect_conforming(const TetMesh& mesh) {
   }
   EXPECT_EQ(written, expected) << "labelled triangles differ from the label boundaries";
   std::vector<bool> used(mesh.vertices.size(), false);
-  for (const auto& t : mesh.tets) for (int i : t) used[i] = true;
+  for (const auto& t : mesh.tets)
+    for (int i : t) used[i] = true;
   EXPECT_EQ(std::count(used.begin(), used.end(), false), 0) << "unused vertices";
 }
 
@@ -86,7 +87,9 @@ std::vector<Face> patch_triangles(const TetMesh& mesh, PatchId patch) {
 int connected_components(const std::vector<Face>& triangles) {
   std::vector<int> parent(triangles.size());
   std::iota(parent.begin(), parent.end(), 0);
-  std::function<int(int)> find = [&](int x) { return parent[x] == x ? x : parent[x] = find(parent[x]); };
+  std::function<int(int)> find = [&](int x) {
+    return parent[x] == x ? x : parent[x] = find(parent[x]);
+  };
   std::map<std::pair<int, int>, int> edge_owner;
   for (int t = 0; t < static_cast<int>(triangles.size()); ++t) {
     for (int i = 0; i < 3; ++i) {

@@ -1,9 +1,8 @@
 // Orthocenters of nearly flat tetrahedra (simplex_geometry.h): the refiner's
 // cells on planar patches are often within rounding of flat. Checked against
 // CGAL's exact rational construction.
-#include <gtest/gtest.h>
-
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
@@ -16,7 +15,9 @@ namespace {
 using EK = CGAL::Exact_predicates_exact_constructions_kernel;
 
 Point3 exact(const std::array<Point3, 4>& p, const std::array<double, 4>& w) {
-  const auto wp = [&](int i) { return EK::Weighted_point_3(EK::Point_3(p[i].x, p[i].y, p[i].z), w[i]); };
+  const auto wp = [&](int i) {
+    return EK::Weighted_point_3(EK::Point_3(p[i].x, p[i].y, p[i].z), w[i]);
+  };
   const EK::Point_3 z = CGAL::weighted_circumcenter(wp(0), wp(1), wp(2), wp(3));
   // exact(): to_double of a lazy number may round its interval (1e-5 relative).
   return {CGAL::to_double(z.x().exact()), CGAL::to_double(z.y().exact()),
@@ -46,13 +47,13 @@ TEST(Orthocenter, NearlyFlatCellsMatchTheExactCenter) {
       Point3 n;
       const std::array<Point3, 4> p = near_flat(rng, lift, n);
       const bool weighted = i % 2 == 1;
-      const std::array<double, 4> w = weighted
-                                          ? std::array<double, 4>{0.01 * u(rng), 0.01 * u(rng),
-                                                                  0.01 * u(rng), 0.01 * u(rng)}
-                                          : std::array<double, 4>{0, 0, 0, 0};
+      const std::array<double, 4> w = weighted ? std::array<double, 4>{0.01 * u(rng), 0.01 * u(rng),
+                                                                       0.01 * u(rng), 0.01 * u(rng)}
+                                               : std::array<double, 4>{0, 0, 0, 0};
       const Point3 z = tet_orthocenter(p, w);
       if (CGAL::coplanar(EK::Point_3(p[0].x, p[0].y, p[0].z), EK::Point_3(p[1].x, p[1].y, p[1].z),
-                         EK::Point_3(p[2].x, p[2].y, p[2].z), EK::Point_3(p[3].x, p[3].y, p[3].z))) {
+                         EK::Point_3(p[2].x, p[2].y, p[2].z),
+                         EK::Point_3(p[3].x, p[3].y, p[3].z))) {
         EXPECT_FALSE(std::isfinite(z.x)) << "a flat cell has its center at infinity";
         continue;
       }

@@ -4,6 +4,8 @@
 // of a curve and its corners are disjoint, with the margin; balls of unrelated
 // features keep clear of each other's feature) and B3 (chords within twice the
 // edge size and within facet_distance of the curve).
+#include "protection.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,7 +14,6 @@
 #include <memory>
 #include <vector>
 
-#include "protection.h"
 #include "rdmesh/domain_file.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/parametric_curve.h"
@@ -132,7 +133,8 @@ void expect_protected(const Layout& l, const ProtectionPlan& plan, const Criteri
   for (std::size_t a = 0; a < balls.size(); ++a) {
     for (std::size_t b = a + 1; b < balls.size(); ++b) {
       if (adjacent(balls[a], balls[b])) continue;
-      const double need = balls[a].r + balls[b].r + Planner::kGap * std::min(balls[a].r, balls[b].r);
+      const double need =
+          balls[a].r + balls[b].r + Planner::kGap * std::min(balls[a].r, balls[b].r);
       if (distance(balls[a].c, balls[b].c) >= need * (1 - 1e-12)) continue;
       if (related(balls[a], balls[b])) {
         ++overlapping;
@@ -243,7 +245,8 @@ TEST(Protection, ASmallBallFarAheadDoesNotShrinkTheStepsBeforeIt) {
                          })->point.x;
   for (const BallSample& b : s) {
     const double g = std::fabs(b.point.x - x_small);
-    EXPECT_GE(b.radius, 0.5 * Planner::kRadiusRatio * Planner::kGrowth * g) << "ball at x = " << b.point.x;
+    EXPECT_GE(b.radius, 0.5 * Planner::kRadiusRatio * Planner::kGrowth * g)
+        << "ball at x = " << b.point.x;
   }
   EXPECT_LT(s.size(), 40u);
 }
@@ -306,8 +309,8 @@ TEST(Protection, BallsKeepOffPatchesTheirFeatureDoesNotBound) {
   Layout l;
   l.corners = {{CornerId(1), {0, 0, 0}, {CurveId(1)}, {PatchId(1)}},
                {CornerId(2), {10, 0, 0}, {CurveId(1)}, {PatchId(1)}}};
-  l.curves = {{CurveInfo{CurveId(1), "line", false, 0, 10, CornerId(1), CornerId(2), {PatchId(1)}},
-               &line}};
+  l.curves = {
+      {CurveInfo{CurveId(1), "line", false, 0, 10, CornerId(1), CornerId(2), {PatchId(1)}}, &line}};
   const Criteria c = test::uniform_criteria(2.0);
   const RectangleNearby oracle;
   Planner planner(l.curves, l.corners, c, 1e-4, &oracle);
@@ -316,7 +319,8 @@ TEST(Protection, BallsKeepOffPatchesTheirFeatureDoesNotBound) {
   EXPECT_GT(oracle.queries, 0);
   double largest = 0;
   for (const BallSample& b : plan.curves[0].samples) {
-    EXPECT_GE(RectangleNearby::distance_to_rectangle(b.point), Planner::kClearance * b.radius * (1 - 1e-12))
+    EXPECT_GE(RectangleNearby::distance_to_rectangle(b.point),
+              Planner::kClearance * b.radius * (1 - 1e-12))
         << "ball at x = " << b.point.x << " radius " << b.radius;
     largest = std::max(largest, b.radius);
   }
@@ -368,13 +372,19 @@ TEST(Protection, NoBallHidesAnotherWhereFeaturesNearlyCoincide) {
     const double turn = next() - 0.5;
     const Point3 dir = (1.0 / std::hypot(1.0, turn)) * Point3{1, turn, 0};
     const Point3 b = a + length * dir;
-    segments.push_back(std::make_unique<ParametricCurve>(
-        [a, b](double t) { return a + t * (b - a); }, 0, 1));
+    segments.push_back(
+        std::make_unique<ParametricCurve>([a, b](double t) { return a + t * (b - a); }, 0, 1));
     const int id = k + 1;
     l.corners.push_back({CornerId(2 * id - 1), a, {CurveId(id)}, {}});
     l.corners.push_back({CornerId(2 * id), b, {CurveId(id)}, {}});
-    l.curves.push_back({CurveInfo{CurveId(id), "s" + std::to_string(id), false, 0, 1,
-                                  CornerId(2 * id - 1), CornerId(2 * id), {}},
+    l.curves.push_back({CurveInfo{CurveId(id),
+                                  "s" + std::to_string(id),
+                                  false,
+                                  0,
+                                  1,
+                                  CornerId(2 * id - 1),
+                                  CornerId(2 * id),
+                                  {}},
                         segments.back().get()});
   }
   const ProtectionPlan plan = plan_for(l, test::uniform_criteria(0.2), 1e-2);

@@ -9,9 +9,9 @@
 
 #include "capped_cylinder_oracle.h"
 #include "mesh_checks.h"
-#include "test_domains.h"
 #include "rdmesh/mesh_measures.h"
 #include "rdmesh/mesher.h"
+#include "test_domains.h"
 
 namespace rdmesh {
 namespace {
@@ -84,9 +84,11 @@ TEST_P(SharpFeatures, CappedCylinderHasThreePatchesAndTwoClosedChains) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Methods, SharpFeatures,
-                         testing::Values(FeatureMethod::kProtectingBalls, FeatureMethod::kRefineEdges),
+                         testing::Values(FeatureMethod::kProtectingBalls,
+                                         FeatureMethod::kRefineEdges),
                          [](const auto& info) {
-                           return info.param == FeatureMethod::kProtectingBalls ? "protect" : "refine";
+                           return info.param == FeatureMethod::kProtectingBalls ? "protect"
+                                                                                : "refine";
                          });
 
 }  // namespace

@@ -8,11 +8,11 @@
 #include <set>
 
 #include "mesh_checks.h"
-#include "test_domains.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/implicit_oracle.h"
 #include "rdmesh/mesh_measures.h"
 #include "rdmesh/mesher.h"
+#include "test_domains.h"
 
 namespace rdmesh {
 namespace {
@@ -57,7 +57,8 @@ TEST(SmoothDomains, UnitSphereIsAClosedSurfaceOfTheRightVolume) {
   // Boundary vertices on the sphere (oracle accuracy); centroids within the facet distance.
   for (const auto& t : mesh.triangles) {
     for (int i : t) EXPECT_NEAR(norm(mesh.vertices[i]), 1.0, 1e-8);
-    const Point3 g = (1.0 / 3.0) * (mesh.vertices[t[0]] + mesh.vertices[t[1]] + mesh.vertices[t[2]]);
+    const Point3 g =
+        (1.0 / 3.0) * (mesh.vertices[t[0]] + mesh.vertices[t[1]] + mesh.vertices[t[2]]);
     EXPECT_LE(1.0 - norm(g), criteria.facet_distance.constant);
   }
   // Size criterion R5.1 holds for every cell: circumradius <= h (checked via edges <= 2h).
@@ -120,8 +121,9 @@ TEST(SmoothDomains, DisjointBallsAreAllFound) {
     return [c, r](const Point3& p) { return squared_norm(p - c) - r * r; };
   };
   auto b1 = ball({-1, 0, 0}, 0.4), b2 = ball({0.2, 0, 0}, 0.3), b3 = ball({1, 0.6, 0}, 0.25);
-  const ImplicitOracle oracle({{-1.5, -1, -1}, {1.5, 1, 1}},
-                              {[=](const Point3& p) { return std::min({b1(p), b2(p), b3(p)}); }});
+  const ImplicitOracle oracle({{-1.5, -1, -1}, {1.5, 1, 1}}, {[=](const Point3& p) {
+                                return std::min({b1(p), b2(p), b3(p)});
+                              }});
   Criteria criteria = uniform_criteria(0.06);
   criteria.facet_distance = 0.002;
   const MeshResult result = generate_mesh(oracle, criteria, refinement_only());

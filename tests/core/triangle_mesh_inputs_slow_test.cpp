@@ -108,8 +108,8 @@ TEST_P(TriangleMeshInputs, MeshedFaithfully) {
     const Point3 &a = mesh.vertices[tri[0]], &b = mesh.vertices[tri[1]], &d = mesh.vertices[tri[2]];
     const Point3 g = (1.0 / 3) * (a + b + d);
     const Point3 ab = b - a, ad = d - a, n = cross(ab, ad);
-    const Point3 center =
-        a + (1 / (2 * squared_norm(n))) * (squared_norm(ab) * cross(ad, n) + squared_norm(ad) * cross(n, ab));
+    const Point3 center = a + (1 / (2 * squared_norm(n))) * (squared_norm(ab) * cross(ad, n) +
+                                                             squared_norm(ad) * cross(n, ab));
     double dc = HUGE_VAL, dg = HUGE_VAL;
     for (const PatchInfo& p : oracle->patches()) {
       if (const auto q = oracle->project(center, p.id)) dc = std::min(dc, distance(*q, center));

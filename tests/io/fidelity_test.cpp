@@ -2,9 +2,10 @@
 // volumes, patches and chains are known: a mesh that matches its model passes;
 // a lost piece of volume, a patch without triangles or a broken curve fails,
 // named in one problem each.
+#include "rdmesh/fidelity.h"
+
 #include <gtest/gtest.h>
 
-#include "rdmesh/fidelity.h"
 #include "rdmesh/quality_report.h"
 #include "test_meshes.h"
 

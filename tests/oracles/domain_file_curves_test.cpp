@@ -1,10 +1,9 @@
 // Tests of the "curves" key of the .json domain file and of the samples with sharp features.
 #include <gtest/gtest.h>
 
-#include <set>
-
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 #include "oracles/oracle_conformance.h"
 #include "rdmesh/domain_file.h"

@@ -1,5 +1,7 @@
 // Tests of the triangle mesh readers and structural checks, on small meshes
 // written by the tests themselves.
+#include "rdmesh/triangle_mesh_io.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -10,7 +12,6 @@
 
 #include "rdmesh/errors.h"
 #include "rdmesh/triangle_mesh_check.h"
-#include "rdmesh/triangle_mesh_io.h"
 
 namespace rdmesh {
 namespace {
@@ -23,7 +24,8 @@ const char* kCubeOff =
     "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n";
 
 std::string temp_file(const std::string& name, const std::string& content) {
-  const fs::path p = fs::temp_directory_path() / ("rdmesh_tmio_" + std::to_string(::getpid()) + "_" + name);
+  const fs::path p =
+      fs::temp_directory_path() / ("rdmesh_tmio_" + std::to_string(::getpid()) + "_" + name);
   std::ofstream(p, std::ios::binary) << content;
   return p.string();
 }
@@ -54,7 +56,8 @@ std::string ascii_stl(const TriangleSoup& s) {
   o << "solid cube\n";
   for (const auto& t : s.triangles) {
     o << " facet normal 0 0 0\n  outer loop\n";
-    for (int v : t) o << "   vertex " << s.points[v].x << " " << s.points[v].y << " " << s.points[v].z << "\n";
+    for (int v : t)
+      o << "   vertex " << s.points[v].x << " " << s.points[v].y << " " << s.points[v].z << "\n";
     o << "  endloop\n endfacet\n";
   }
   o << "endsolid cube\n";
@@ -102,7 +105,9 @@ TEST(TriangleMeshIo, AsciiStlMergesDuplicates) {
   expect_cube(read_triangle_mesh(path));
 }
 
-TEST(TriangleMeshIo, BinaryStl) { expect_cube(read_triangle_mesh(temp_file("b.STL", binary_stl(cube())))); }
+TEST(TriangleMeshIo, BinaryStl) {
+  expect_cube(read_triangle_mesh(temp_file("b.STL", binary_stl(cube()))));
+}
 
 TEST(TriangleMeshIo, TruncatedBinaryStl) {
   std::string b = binary_stl(cube());
@@ -123,7 +128,8 @@ TEST(TriangleMeshIo, Obj) {
 TEST(TriangleMeshIo, AsciiPly) {
   const std::string ply =
       "ply\nformat ascii 1.0\ncomment hi\nelement vertex 8\nproperty float x\nproperty float y\n"
-      "property float z\nproperty uchar red\nelement face 6\nproperty list uchar int vertex_indices\n"
+      "property float z\nproperty uchar red\nelement face 6\nproperty list uchar int "
+      "vertex_indices\n"
       "element extra 1\nproperty list uchar float junk\nend_header\n"
       "0 0 0 1\n1 0 0 1\n1 1 0 1\n0 1 0 1\n0 0 1 1\n1 0 1 1\n1 1 1 1\n0 1 1 1\n"
       "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n2 0.5 0.25\n";
@@ -132,13 +138,14 @@ TEST(TriangleMeshIo, AsciiPly) {
 
 std::string binary_ply(bool big_endian) {
   const TriangleSoup s = cube();
-  std::string b = std::string("ply\nformat ") +
-                  (big_endian ? "binary_big_endian" : "binary_little_endian") +
-                  " 1.0\nelement vertex 8\nproperty double x\nproperty double y\nproperty double z\n"
-                  "element face 12\nproperty list uchar uint vertex_indices\nend_header\n";
+  std::string b =
+      std::string("ply\nformat ") + (big_endian ? "binary_big_endian" : "binary_little_endian") +
+      " 1.0\nelement vertex 8\nproperty double x\nproperty double y\nproperty double z\n"
+      "element face 12\nproperty list uchar uint vertex_indices\nend_header\n";
   auto put = [&](const void* p, int n) {
     std::string bytes(static_cast<const char*>(p), n);
-    if (big_endian == (std::endian::native == std::endian::little)) std::reverse(bytes.begin(), bytes.end());
+    if (big_endian == (std::endian::native == std::endian::little))
+      std::reverse(bytes.begin(), bytes.end());
     b += bytes;
   };
   for (const Point3& p : s.points) {
@@ -179,8 +186,9 @@ TEST(TriangleMeshIo, Errors) {
   expect_has(err("s.off", "OFF\n2 1 0\n0 0 0\n1 0 0\n3 0 1 2\n"), "line 5");
   expect_has(err("e.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"), "ends after 1 of 2 faces");
   expect_has(err("o.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n"), "out of range");
-  expect_has(err("x.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_header\n1\n2\n")
-                , "ends early");
+  expect_has(
+      err("x.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_header\n1\n2\n"),
+      "ends early");
   expect_has(err("u.xyz", ""), "unknown");
   expect_has(error_of([] { read_triangle_mesh("/nonexistent/m.off"); }),
              "/nonexistent/m.off: no such file");
@@ -202,13 +210,14 @@ TEST(TriangleMeshCheck, OpenSurfaceIsNotClosed) {
 }
 
 TEST(TriangleMeshCheck, NonManifoldEdge) {
-  TriangleSoup s = soup_of("OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n");
+  TriangleSoup s =
+      soup_of("OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n");
   expect_has(error_of([&] { orient_triangle_mesh(s, "m.off", false); }), "non-manifold edge");
 }
 
 TEST(TriangleMeshCheck, OrientsInconsistentTrianglesOutward) {
   TriangleSoup s = cube();
-  std::swap(s.triangles[3][1], s.triangles[3][2]);  // one flipped triangle
+  std::swap(s.triangles[3][1], s.triangles[3][2]);    // one flipped triangle
   for (auto& t : s.triangles) std::swap(t[1], t[2]);  // now all inward but one
   const TriangleMeshTopology topo = orient_triangle_mesh(s, "m.off", true);
   EXPECT_NEAR(enclosed_volume(s), 1.0, 1e-12);

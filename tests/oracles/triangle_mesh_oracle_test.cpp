@@ -1,5 +1,7 @@
 // Tests of TriangleMeshOracle: subdomains from nested components, patches and
 // sharp features, and the shared oracle conformance suite on real meshes.
+#include "rdmesh/triangle_mesh_oracle.h"
+
 #include <gtest/gtest.h>
 
 #include <sstream>
@@ -7,12 +9,10 @@
 #include "oracles/oracle_conformance.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/polyline_curve.h"
-#include "rdmesh/triangle_mesh_oracle.h"
 #include "shared_data.h"
 
 namespace rdmesh {
 namespace {
-
 
 /// An axis-aligned box as 12 outward triangles.
 TriangleSoup box_soup(Point3 lo, Point3 hi) {
@@ -129,10 +129,12 @@ TEST(TriangleMeshOracle, OpenOrSelfIntersectingInputsAreRejected) {
   TriangleSoup open = box_soup({0, 0, 0}, {1, 1, 1});
   open.triangles.pop_back();
   EXPECT_THROW(TriangleMeshOracle(open, "open"), InputError);
-  const TriangleSoup crossing = join(box_soup({0, 0, 0}, {2, 2, 2}), box_soup({1, 1, 1}, {3, 3, 3}));
+  const TriangleSoup crossing =
+      join(box_soup({0, 0, 0}, {2, 2, 2}), box_soup({1, 1, 1}, {3, 3, 3}));
   EXPECT_THROW(TriangleMeshOracle(crossing, "crossing"), InputError);
-  EXPECT_THROW(TriangleMeshOracle(box_soup({0, 0, 0}, {1, 1, 1}), "x", {.feature_angle_degrees = -1}),
-               InputError);
+  EXPECT_THROW(
+      TriangleMeshOracle(box_soup({0, 0, 0}, {1, 1, 1}), "x", {.feature_angle_degrees = -1}),
+      InputError);
 }
 
 TEST(TriangleMeshOracle, Fandisk) {
@@ -182,7 +184,8 @@ INSTANTIATE_TEST_SUITE_P(TriangleMeshOracle, SharedMeshes,
                                          "netgen_part1.stl"),
                          [](const auto& info) {
                            std::string s = info.param;
-                           for (char& c : s) c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+                           for (char& c : s)
+                             c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
                            return s;
                          });
 

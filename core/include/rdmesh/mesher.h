@@ -19,10 +19,10 @@ struct Progress {
   /// "refining", "exuding slivers", "extracting the mesh" or "improving the tetrahedra". Each phase
   /// is announced as it starts, with zero counts; the counts come from the insertions.
   const char* phase = "refining";
-  std::size_t vertices = 0;       ///< vertices in the triangulation
-  std::size_t edge_queue = 0;     ///< restricted edges waiting (R1, R2)
-  std::size_t facet_queue = 0;    ///< restricted facets waiting (R3, R4)
-  std::size_t cell_queue = 0;     ///< cells waiting (R5)
+  std::size_t vertices = 0;     ///< vertices in the triangulation
+  std::size_t edge_queue = 0;   ///< restricted edges waiting (R1, R2)
+  std::size_t facet_queue = 0;  ///< restricted facets waiting (R3, R4)
+  std::size_t cell_queue = 0;   ///< cells waiting (R5)
   double elapsed_seconds = 0.0;
 };
 
@@ -113,7 +113,7 @@ struct RefinementStats {
 struct MeshResult {
   TetMesh mesh;
   RefinementStats stats;
-  ExudationStats exudation;  ///< ran == false when disabled
+  ExudationStats exudation;         ///< ran == false when disabled
   TetImprovementStats improvement;  ///< ran == false when disabled
 };
 

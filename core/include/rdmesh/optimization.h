@@ -63,11 +63,11 @@ struct ExudationStats {
   double min_dihedral_after_deg = 0;
   DihedralHistogram histogram_before{};
   DihedralHistogram histogram_after{};
-  std::size_t moves_tried = 0;     ///< vertices whose weight was pumped
-  std::size_t moves_accepted = 0;  ///< weight changes applied to the triangulation
-  std::size_t perturb_moves_tried = 0;     ///< volume vertices the perturbation tried to move
+  std::size_t moves_tried = 0;          ///< vertices whose weight was pumped
+  std::size_t moves_accepted = 0;       ///< weight changes applied to the triangulation
+  std::size_t perturb_moves_tried = 0;  ///< volume vertices the perturbation tried to move
   /// (moves_tried / moves_accepted count the pumps of both pumping rounds)
-  std::size_t perturb_moves_accepted = 0;  ///< vertex moves kept
+  std::size_t perturb_moves_accepted = 0;     ///< vertex moves kept
   double min_dihedral_after_perturb_deg = 0;  ///< after the first pumping and the perturbation
   double perturb_seconds = 0;                 ///< included in `seconds`
   bool time_limit_reached = false;
@@ -108,9 +108,9 @@ struct TetImprovementStats {
   DihedralHistogram histogram_after{};
   std::size_t tets_before = 0;
   std::size_t tets_after = 0;
-  std::size_t face_flips = 0;     ///< 2-3 flips (a face replaced by an edge)
-  std::size_t edge_removals = 0;  ///< an edge and its ring of n tets replaced by 2n - 4 tets
-  std::size_t vertex_moves = 0;   ///< vertices on no boundary triangle moved
+  std::size_t face_flips = 0;      ///< 2-3 flips (a face replaced by an edge)
+  std::size_t edge_removals = 0;   ///< an edge and its ring of n tets replaced by 2n - 4 tets
+  std::size_t vertex_moves = 0;    ///< vertices on no boundary triangle moved
   std::size_t boundary_moves = 0;  ///< vertices moved along their patch
   /// Vertices added inside a tetrahedron and its neighbours (numbered after the others).
   std::size_t vertex_insertions = 0;

@@ -279,8 +279,8 @@ class Exuder {
   CellLimits limits_;
   double bound_cosine_;
   std::vector<double> nearest_sq_;
-  std::vector<int> moves_;    ///< accepted moves per vertex
-  std::vector<char> dirty_;   ///< star changed since the vertex was last tried
+  std::vector<int> moves_;   ///< accepted moves per vertex
+  std::vector<char> dirty_;  ///< star changed since the vertex was last tried
   std::priority_queue<QueuedVertex> queue_;
   std::vector<Cell_handle> cells_;  ///< finite cells, scratch of domain_cosines
   std::vector<double> cosines_;
@@ -298,9 +298,10 @@ void check_invariants(const Triangulation& tr) {
           (patch != 0 && !(c->info().surface_center[i] == n->info().surface_center[j])))
         throw InternalError("exudation: the two sides of a facet disagree on its restricted data");
       if ((patch != 0) != (c->info().label != n->info().label))
-        throw InternalError("exudation: labels differ across a non-restricted facet (or agree "
-                            "across a restricted one), cell stamp " +
-                            std::to_string(c->info().stamp));
+        throw InternalError(
+            "exudation: labels differ across a non-restricted facet (or agree "
+            "across a restricted one), cell stamp " +
+            std::to_string(c->info().stamp));
     }
   }
 }

@@ -92,7 +92,8 @@ double VertexPerturber::move(Vertex_handle v, const Point3& p, int label) {
   const std::size_t vertices = tr_.number_of_vertices();
   if (tr_.move_if_no_collision(v, weighted(p, v->point().weight())) != v ||
       tr_.number_of_vertices() != vertices)
-    throw InternalError("perturbation: a vertex collided although it was kept away from all others");
+    throw InternalError(
+        "perturbation: a vertex collided although it was kept away from all others");
   // New cells have the default stamp 0: collect them from the new star.
   new_cells_.clear();
   tr_.incident_cells(v, std::back_inserter(new_cells_));
@@ -115,9 +116,9 @@ double VertexPerturber::move(Vertex_handle v, const Point3& p, int label) {
     info.facet_patch = {0, 0, 0, 0};
     if (tr_.is_infinite(c)) continue;
     const Point3 p0 = to_point3(c->vertex(0)->point());
-    info.circumcenter = tet_circumcenter(p0, to_point3(c->vertex(1)->point()),
-                                         to_point3(c->vertex(2)->point()),
-                                         to_point3(c->vertex(3)->point()));
+    info.circumcenter =
+        tet_circumcenter(p0, to_point3(c->vertex(1)->point()), to_point3(c->vertex(2)->point()),
+                         to_point3(c->vertex(3)->point()));
     info.squared_radius = squared_norm(info.circumcenter - p0);
     worst = std::max(worst, cell_cosine(c));
   }

@@ -32,8 +32,8 @@ double critical_weight(Cell_handle c, const Point3& v) {
   const double det = dot(u[0], cross(u[1], u[2]));
   if (!(std::abs(det) > 0)) return std::numeric_limits<double>::infinity();
   // Orthocenter z = p0 + x with u_i . x = b_i.
-  const Point3 x = (1.0 / det) * (b[0] * cross(u[1], u[2]) + b[1] * cross(u[2], u[0]) +
-                                  b[2] * cross(u[0], u[1]));
+  const Point3 x = (1.0 / det) *
+                   (b[0] * cross(u[1], u[2]) + b[1] * cross(u[2], u[0]) + b[2] * cross(u[0], u[1]));
   const Point3 d = v - p0;
   const double crit = squared_norm(d) + q0.weight() - 2.0 * dot(d, x);
   return std::isfinite(crit) ? crit : std::numeric_limits<double>::infinity();
@@ -144,7 +144,8 @@ double WeightPump::boundary_quality(Vertex_handle v, double cutoff) {
       if (n->tds_data().is_in_conflict()) continue;
       BoundaryFacet f{c, i, 0, false};
       f.label = c->info().facet_patch[i] != 0 ? c->info().label : n->info().label;
-      for (int k = 1; k < 4; ++k) f.infinite = f.infinite || tr_.is_infinite(c->vertex((i + k) & 3));
+      for (int k = 1; k < 4; ++k)
+        f.infinite = f.infinite || tr_.is_infinite(c->vertex((i + k) & 3));
       boundary_.push_back(f);
       if (f.infinite || f.label == 0) continue;
       const double cosine = max_dihedral_cosine(pv, to_point3(c->vertex((i + 1) & 3)->point()),
@@ -239,7 +240,8 @@ WeightPump::Check WeightPump::validate(Vertex_handle v) {
 WeightPump::Outcome WeightPump::pump(Vertex_handle v, double max_weight) {
   collect_star(v);
   frontier_ = {};
-  for (std::size_t z = 0; z < star_size_; ++z) push_frontier(zone_[z]->neighbor(zone_[z]->index(v)), v);
+  for (std::size_t z = 0; z < star_size_; ++z)
+    push_frontier(zone_[z]->neighbor(zone_[z]->index(v)), v);
 
   double best_weight = -1, best_quality = 0;
   std::size_t best_size = 0;
@@ -343,9 +345,9 @@ bool WeightPump::commit(Vertex_handle v, double weight) {
     } else {
       // The unweighted circumcenter, as refinement stores it (see sliver_exuder.h).
       const Point3 p0 = to_point3(c->vertex(0)->point());
-      info.circumcenter = tet_circumcenter(p0, to_point3(c->vertex(1)->point()),
-                                           to_point3(c->vertex(2)->point()),
-                                           to_point3(c->vertex(3)->point()));
+      info.circumcenter =
+          tet_circumcenter(p0, to_point3(c->vertex(1)->point()), to_point3(c->vertex(2)->point()),
+                           to_point3(c->vertex(3)->point()));
       info.squared_radius = squared_norm(info.circumcenter - p0);
     }
     new_cells_.push_back(c);

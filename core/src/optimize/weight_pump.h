@@ -129,7 +129,7 @@ class WeightPump {
   const ChainEdges* chains_;
   std::vector<Cell_handle> zone_;  ///< Z: the star of v first, then absorbed cells
   std::size_t star_size_ = 0;
-  double zone_quality_ = -1;       ///< worst cosine over the domain cells of Z
+  double zone_quality_ = -1;  ///< worst cosine over the domain cells of Z
   std::vector<StarFacet> star_facets_;
   std::vector<BoundaryFacet> boundary_;
   std::vector<BoundaryEdge> edges_;

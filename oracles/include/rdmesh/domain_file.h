@@ -54,7 +54,8 @@ namespace rdmesh {
 
 /// Criteria keys found in the file; absent keys are nullopt.
 struct CriteriaHints {
-  std::optional<ScalarField> size, edge_size, facet_size, cell_size;  ///< constant or expression of x,y,z
+  std::optional<ScalarField> size, edge_size, facet_size,
+      cell_size;  ///< constant or expression of x,y,z
   std::optional<double> facet_distance, facet_angle, radius_edge;
   std::optional<SizeSpec> sizes;  ///< the "sizes" object
 };

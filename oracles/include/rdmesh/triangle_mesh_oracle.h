@@ -17,12 +17,11 @@
 //
 // Curves and corners. Corners are the vertices with a number of sharp edges
 // other than 0 and 2, and the vertices where two sharp edges turn by more than
-// the feature angle (a kink: curves are smooth), ids in vertex order. Curves are the chains of sharp edges
-// between corners (open, in order of their start corner, then of the first
-// edge around it) and the loops of sharp edges without corner (closed, after
-// the open ones, in order of their first vertex); each is a PolylineCurve
-// through the mesh vertices (parameter = arc length) whose patches are those on
-// both sides. A sharp edge inside a patch (a crease that fades out) gives a
+// the feature angle (a kink: curves are smooth), ids in vertex order. Curves are the chains of
+// sharp edges between corners (open, in order of their start corner, then of the first edge around
+// it) and the loops of sharp edges without corner (closed, after the open ones, in order of their
+// first vertex); each is a PolylineCurve through the mesh vertices (parameter = arc length) whose
+// patches are those on both sides. A sharp edge inside a patch (a crease that fades out) gives a
 // curve whose two sides are that one patch.
 //
 // Queries. intersect() returns the crossing closest to a (exact predicates
@@ -151,7 +150,7 @@ class TriangleMeshOracle final : public DomainOracle {
   std::vector<double> component_volume_;
   std::vector<SubdomainInfo> subdomain_infos_;
   std::vector<PatchInfo> patch_infos_;
-  std::vector<std::vector<int>> patch_triangles_;  // indexed by patch id - 1
+  std::vector<std::vector<int>> patch_triangles_;        // indexed by patch id - 1
   std::vector<std::array<double, 3>> corner_curvature_;  // per triangle corner, within its patch
   int sharp_edge_count_ = 0;
   std::vector<CornerInfo> corner_infos_;

@@ -23,7 +23,7 @@ struct FemOptions {
   std::vector<std::string> size_on;  ///< --size-on KIND:WHICH=SIZE (repeatable)
   std::string sizes_file;            ///< --sizes FILE.json: {"KIND:WHICH": SIZE, "grade": G}
   std::optional<double> grade;       ///< --grade G (default: the file's, else 1.4)
-  std::optional<double> curvature;   ///< --curvature N: elements per full turn (default: the file's)
+  std::optional<double> curvature;  ///< --curvature N: elements per full turn (default: the file's)
 };
 
 void add_fem_options(CLI::App& app, FemOptions& opt);
