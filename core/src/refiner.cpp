@@ -41,11 +41,16 @@ void Refiner::insert_initial_points() {
     insert_corners_and_curve_samples();
   }
   Cell_handle hint;
+  std::size_t offered = 0, kept_out = 0;  // patch points, and those the curves kept out
   for (const PatchInfo& patch : oracle_.patches()) {
     for (const Point3& p : oracle_.initial_points(patch.id)) {
+      ++offered;
       if (plan_) {
         // Nothing is ever inserted inside a protecting ball.
-        if (!outside_balls(p, hint)) continue;
+        if (!outside_balls(p, hint)) {
+          ++kept_out;
+          continue;
+        }
       } else {
         // A patch point close to a curve would sit in the balls of its restricted
         // edges and force tiny arcs; the curve samples cover that area instead.
@@ -55,7 +60,10 @@ void Refiner::insert_initial_points() {
           const double keep_out = 0.25 * criteria_.edge_size(p);
           near_curve = near_curve || squared_norm(c.curve->point(t) - p) < keep_out * keep_out;
         }
-        if (near_curve) continue;
+        if (near_curve) {
+          ++kept_out;
+          continue;
+        }
       }
       const Vertex_handle v = tr_.insert(to_weighted(p), hint);
       if (v == Vertex_handle() || v->info().dim != FeatureDim::kVolume) continue;  // a duplicate
@@ -76,6 +84,17 @@ void Refiner::insert_initial_points() {
       const Point3 p{c.x + (k & 1 ? r : -r), c.y + (k & 2 ? r : -r), c.z + (k & 4 ? r : -r)};
       hint = tr_.insert(to_weighted(p), hint)->cell();
     }
+  }
+  if (tr_.dimension() < 3 && kept_out > 0) {
+    // A size so large that the curves' protecting balls (or, with R1/R2, the
+    // keep-out around their samples) hold the patches' initial points: a lens
+    // at --size 5 keeps three balls on its rim and nothing else.
+    throw InputError(
+        "the sizes are too large for this domain: the " +
+        std::string(plan_ ? "protecting balls of the curves hold " : "curve samples keep out ") +
+        std::to_string(kept_out) + " of the " + std::to_string(offered) +
+        " initial points of the patches, and what is left spans no volume: "
+        "give a smaller size");
   }
   if (tr_.dimension() < 3) {
     throw OracleError("the oracle's initial points span no volume (" +

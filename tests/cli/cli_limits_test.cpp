@@ -157,6 +157,29 @@ TEST(CliLimits, ADomainThinnerThanItsCellsIsAnInputErrorNotAnInternalOne) {
   EXPECT_FALSE(std::filesystem::exists(dir.file("thin.mesh")));
 }
 
+TEST(CliLimits, ASizeWhoseBallsHoldEveryPatchPointIsAnInputErrorNotAnInternalOne) {
+  // The lens sample at --size 4294967295 (a mutant found by
+  // fuzz/cli_campaign.py; from --size 5 on): three protecting balls on its rim
+  // hold every initial point of both caps, and the rim's three centres span
+  // no volume. It was exit 3 without the file's name.
+  ScratchDir dir;
+  for (const char* size : {"5", "4294967295"}) {
+    const CliRun run = run_cli(
+        source_path("samples/lens.json") + " --size " + size + " -o lens.mesh -q", dir.path());
+    EXPECT_EQ(run.exit_code, 2) << size << ": " << run.output;
+    EXPECT_NE(run.output.find("lens.json: the sizes are too large for this domain: the "
+                              "protecting balls of the curves hold"),
+              std::string::npos)
+        << run.output;
+    EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << run.output;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("lens.mesh")));
+  }
+  // At --size 3 the balls leave room: a mesh.
+  const CliRun ok =
+      run_cli(source_path("samples/lens.json") + " --size 3 -o lens.mesh -q", dir.path());
+  EXPECT_EQ(ok.exit_code, 0) << ok.output;
+}
+
 TEST(CliLimits, SharedJunkPlyIsRefused) {
   RDMESH_REQUIRE_SHARED_DATA(junk, "bad/junk.ply");
   ScratchDir dir;
