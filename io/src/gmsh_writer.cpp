@@ -8,6 +8,9 @@
 // Entity topology: a volume is bounded by the patches of TetMesh::patches that
 // touch it, a surface by the curves whose CurveInfo::patches list it, an open
 // curve by its start (+) and end (-) corner points.
+// A partitioned mesh adds $PartitionedEntities: one entity per model entity
+// and partition, then the partition-boundary entities (partition_boundaries.h),
+// whose elements follow the model's in $Elements.
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -19,6 +22,7 @@
 #include "element_nodes.h"
 #include "mesh_labels.h"
 #include "msh_tokens.h"
+#include "partition_boundaries.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/mesh_writers.h"
 #include "rdmesh/second_order.h"
@@ -250,16 +254,49 @@ std::size_t count_non_empty(const std::vector<std::vector<int>>& groups) {
       std::count_if(groups.begin(), groups.end(), [](const auto& g) { return !g.empty(); }));
 }
 
+/// Partition-boundary elements to write after the model's: the entities and
+/// the tag of the first one per dimension.
+struct BoundaryBlocks {
+  const io_detail::PartitionBoundaries* entities = nullptr;
+  std::array<int, 4> first_tag{};
+};
+
+/// One block per partition-boundary entity of dimension `dim` (Gmsh type `type`).
+void write_boundary_blocks(io_detail::MshTokens& t, int dim, int type, const BoundaryBlocks& b,
+                           long long& next_tag) {
+  int tag = b.first_tag[dim];
+  for (const io_detail::PartitionBoundary& e : (*b.entities)[dim]) {
+    t.i(dim);
+    t.i(tag++);
+    t.i(type);
+    t.z(static_cast<long long>(e.elements.size()));
+    t.end_line();
+    for (const auto& nodes : e.elements) {
+      t.z(next_tag++);
+      for (int v : nodes) t.z(v + 1);
+      t.end_line();
+    }
+  }
+}
+
 /// $Elements: one block per non-empty group of `levels` (model entities, or
-/// partitioned entities with their tags as labels).
-void write_elements(std::ostream& out, const TetMesh& mesh, const Levels& levels, bool binary) {
+/// partitioned entities with their tags as labels), then the partition
+/// boundaries' blocks if any.
+void write_elements(std::ostream& out, const TetMesh& mesh, const Levels& levels, bool binary,
+                    const BoundaryBlocks& boundaries = {}) {
   std::vector<std::array<int, 1>> corner_elements;
   corner_elements.reserve(mesh.corner_vertices.size());
   for (int v : mesh.corner_vertices) corner_elements.push_back({v});
-  const auto num_elements = static_cast<long long>(mesh.tets.size() + mesh.triangles.size() +
-                                                   mesh.edges.size() + corner_elements.size());
+  auto num_elements = static_cast<long long>(mesh.tets.size() + mesh.triangles.size() +
+                                             mesh.edges.size() + corner_elements.size());
   std::size_t num_blocks = 0;
   for (const Level& level : levels) num_blocks += count_non_empty(level.groups);
+  if (boundaries.entities) {
+    for (const auto& dim : *boundaries.entities) {
+      num_blocks += dim.size();
+      for (const auto& e : dim) num_elements += static_cast<long long>(e.elements.size());
+    }
+  }
   out << "$Elements\n";
   {
     io_detail::MshTokens t(out, binary);
@@ -270,7 +307,8 @@ void write_elements(std::ostream& out, const TetMesh& mesh, const Levels& levels
     t.end_line();
     long long next_tag = 1;
     // Tets and triangles first: a mesh without features keeps its element tags.
-    if (is_second_order(mesh)) {  // 10-node tets, 6-node triangles, 3-node lines
+    const bool p2 = is_second_order(mesh);
+    if (p2) {  // 10-node tets, 6-node triangles, 3-node lines
       write_element_blocks(t, 3, 11, io_detail::tet10_elements(mesh, io_detail::Tet10Order::kGmsh),
                            levels[3], next_tag);
       write_element_blocks(t, 2, 9, io_detail::triangle6_elements(mesh), levels[2], next_tag);
@@ -281,6 +319,11 @@ void write_elements(std::ostream& out, const TetMesh& mesh, const Levels& levels
       write_element_blocks(t, 1, 1, mesh.edges, levels[1], next_tag);
     }
     write_element_blocks(t, 0, 15, corner_elements, levels[0], next_tag);
+    if (boundaries.entities) {
+      write_boundary_blocks(t, 2, p2 ? 9 : 2, boundaries, next_tag);
+      write_boundary_blocks(t, 1, p2 ? 8 : 1, boundaries, next_tag);
+      write_boundary_blocks(t, 0, 15, boundaries, next_tag);
+    }
   }
   out << (binary ? "\n" : "") << "$EndElements\n";
 }
@@ -314,8 +357,41 @@ std::array<std::vector<PartEntity>, 4> partitioned_entities(const TetMesh& mesh,
   return out;
 }
 
-void write_partitioned_entities(std::ostream& out, const TetMesh& mesh,
-                                const std::array<std::vector<PartEntity>, 4>& parts, bool binary) {
+/// The tag of each partition-boundary entity: after the partitioned entities
+/// of its dimension (after the model's tags when there are none).
+std::array<int, 4> first_boundary_tags(const Levels& levels,
+                                       const std::array<std::vector<PartEntity>, 4>& parts) {
+  std::array<int, 4> first{};
+  for (int dim = 0; dim < 4; ++dim) {
+    first[dim] = !parts[dim].empty()           ? parts[dim].back().tag + 1
+                 : !levels[dim].labels.empty() ? levels[dim].labels.back().id + 1
+                                               : 1;
+  }
+  return first;
+}
+
+/// Point entities: the position; others: the box of the elements' nodes.
+std::vector<double> boundary_where(const TetMesh& mesh, int dim,
+                                   const io_detail::PartitionBoundary& b) {
+  if (dim == 0) {
+    const Point3& p = mesh.vertices[b.elements.front().front()];
+    return {p.x, p.y, p.z};
+  }
+  std::vector<std::array<int, 1>> nodes;
+  std::vector<int> which;
+  for (const auto& e : b.elements) {
+    for (int v : e) {
+      which.push_back(static_cast<int>(nodes.size()));
+      nodes.push_back({v});
+    }
+  }
+  const auto box = bounding_box(mesh, nodes, which);
+  return std::vector<double>(box.begin(), box.end());
+}
+
+void write_partitioned_entities(std::ostream& out, const TetMesh& mesh, const Levels& levels,
+                                const std::array<std::vector<PartEntity>, 4>& parts,
+                                const io_detail::PartitionBoundaries& boundaries, bool binary) {
   const int num_partitions =
       *std::max_element(mesh.tet_partition.begin(), mesh.tet_partition.end());
   out << "$PartitionedEntities\n";
@@ -324,11 +400,14 @@ void write_partitioned_entities(std::ostream& out, const TetMesh& mesh,
   t.end_line();
   t.z(0);  // no ghost entities
   t.end_line();
-  for (int dim = 0; dim < 4; ++dim) t.z(static_cast<long long>(parts[dim].size()));
+  for (int dim = 0; dim < 4; ++dim) {
+    t.z(static_cast<long long>(parts[dim].size() + boundaries[dim].size()));
+  }
   t.end_line();
   const auto box = [](const std::array<double, 6>& b) {
     return std::vector<double>(b.begin(), b.end());
   };
+  const std::array<int, 4> first_boundary = first_boundary_tags(levels, parts);
   for (int dim = 0; dim < 4; ++dim) {
     for (const PartEntity& e : parts[dim]) {
       t.i(e.tag);
@@ -351,6 +430,18 @@ void write_partitioned_entities(std::ostream& out, const TetMesh& mesh,
       t.z(1);
       t.i(e.parent);
       if (dim > 0) t.z(0);  // no bounding entities
+      t.end_line();
+    }
+    // Partition boundaries: no physical group, no bounding entities.
+    int tag = first_boundary[dim];
+    for (const io_detail::PartitionBoundary& b : boundaries[dim]) {
+      t.i(tag++);
+      t.i(b.parent_dim);
+      t.i(b.parent);
+      write_tags(t, b.partitions);
+      for (double c : boundary_where(mesh, dim, b)) t.d(c);
+      t.z(0);
+      if (dim > 0) t.z(0);
       t.end_line();
     }
   }
@@ -437,12 +528,13 @@ void write_msh41(const TetMesh& mesh, std::ostream& out, bool binary) {
   write_entities(out, mesh, levels, binary);
   if (!mesh.tet_partition.empty()) {
     const auto parts = partitioned_entities(mesh, levels);
-    write_partitioned_entities(out, mesh, parts, binary);
+    const io_detail::PartitionBoundaries boundaries = io_detail::partition_boundaries(mesh);
+    write_partitioned_entities(out, mesh, levels, parts, boundaries, binary);
     write_partitioned_nodes(out, mesh, parts[3], binary);
     write_elements(out, mesh,
                    Levels{partitioned_level(parts[0]), partitioned_level(parts[1]),
                           partitioned_level(parts[2]), partitioned_level(parts[3])},
-                   binary);
+                   binary, BoundaryBlocks{&boundaries, first_boundary_tags(levels, parts)});
   } else {
     write_nodes(out, mesh, levels, binary);
     write_elements(out, mesh, levels, binary);

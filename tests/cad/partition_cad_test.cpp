@@ -1,6 +1,7 @@
 // Partitions of shared STEP parts (several solids, interfaces): every
 // tetrahedron in one partition, balance within 3%, a cut far below the
-// dual graph's size, and Gmsh reads the partitioned .msh.
+// dual graph's size, the partition-boundary surfaces, curves and points
+// written (io/msh_partitions.h), and Gmsh reads the partitioned .msh.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -9,6 +10,7 @@
 #include <sstream>
 #include <string>
 
+#include "io/msh_partitions.h"
 #include "rdmesh/cad_oracle.h"
 #include "rdmesh/mesh_writers.h"
 #include "rdmesh/mesher.h"
@@ -44,6 +46,15 @@ TEST_P(PartitionCad, BalancedSmallCutGmshReadsIt) {
     const std::string file = ::testing::TempDir() + "rdmesh_partition_" +
                              std::to_string(::getpid()) + "_" + std::string(GetParam()) + ".msh";
     write_mesh(m, file);
+    std::ifstream written(file);
+    std::stringstream text;
+    text << written.rdbuf();
+    const auto entities = testing::expect_partition_boundaries(m, text.str());
+    EXPECT_GT(entities[2], 0u);
+    EXPECT_GT(entities[1], 0u);
+    EXPECT_GT(entities[0], 0u);
+    std::printf("%s: partition boundaries: %zu surfaces, %zu curves, %zu points\n", GetParam(),
+                entities[2], entities[1], entities[0]);
     const std::string log_file = file + ".log";
     const int code = std::system(("gmsh -check " + file + " > " + log_file + " 2>&1").c_str());
     std::ifstream in(log_file);

@@ -6,9 +6,11 @@
 
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 
 #include "cli_runner.h"
+#include "io/msh_partitions.h"
 #include "shared_data.h"
 
 namespace rdmesh::test {
@@ -85,6 +87,17 @@ TEST(CliFem, PartitionsAreWrittenAndReported) {
   EXPECT_EQ(total, r.at("tets").get<std::size_t>());
   const std::string msh = read_file(dir.file("p.msh"));
   EXPECT_NE(msh.find("$PartitionedEntities\n3\n0\n"), std::string::npos);
+  // The faces between partitions are 6-node triangles of partition-boundary surfaces.
+  std::size_t boundary_faces = 0;
+  for (const auto& [key, e] : testing::read_msh_partitions(msh).entities) {
+    if (e.dim != 2 || e.partitions.size() < 2) continue;
+    for (const auto& nodes : e.elements) {
+      ++boundary_faces;
+      EXPECT_EQ(std::set<int>(nodes.begin(), nodes.end()).size(), 6u);
+    }
+  }
+  EXPECT_GT(boundary_faces, 0u);
+  EXPECT_LE(boundary_faces, p.at("edge_cut").get<std::size_t>());
   EXPECT_FALSE(r.at("second_order").is_null());
   const CliRun vtu = run_cli(sample + " -q -o p.vtu --partitions 3", dir.path());
   ASSERT_EQ(vtu.exit_code, 0) << vtu.output;

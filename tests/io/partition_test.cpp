@@ -13,6 +13,7 @@
 #include "core/capped_cylinder_oracle.h"
 #include "core/test_domains.h"
 #include "io/meshio_util.h"
+#include "io/msh_partitions.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/mesher.h"
 #include "rdmesh/second_order.h"
@@ -139,6 +140,12 @@ TEST_F(PartitionFiles, VtuCarriesThePartitionAndGmshReadsTheMsh) {
   const std::string log = testing::expect_gmsh_accepts("-check " + dir_.file("p.msh"));
   EXPECT_NE(log.find(std::to_string(mesh.vertices.size()) + " nodes"), std::string::npos) << log;
   EXPECT_NE(log.find("Info    : 4 partitions"), std::string::npos) << log;
+  // The faces between partitions are written, once, on partition-boundary
+  // surfaces (with their curves and points), the faces of both subdomains and of their interface.
+  const auto entities =
+      testing::expect_partition_boundaries(mesh, testing::read_text(dir_.file("p.msh")));
+  EXPECT_GT(entities[2], 0u);
+  EXPECT_GT(entities[1], 0u);
   // Gmsh saves it again with its partitions.
   testing::expect_gmsh_accepts(dir_.file("p.msh") + " -0 -o " + dir_.file("again.msh"));
   const std::string again = testing::read_text(dir_.file("again.msh"));

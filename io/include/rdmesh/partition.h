@@ -8,9 +8,9 @@
 // Every tetrahedron gets one partition 1..n. A triangle, feature edge or
 // corner vertex goes to the smallest partition among the tetrahedra that
 // contain it. The writers then emit them: Gmsh 4.1 partitioned entities (one
-// per model entity and partition, as Gmsh writes them, without the partition
-// boundary entities), a `partition` cell array in .vtu; Medit has no place
-// for them.
+// per model entity and partition, and the partition-boundary surfaces, curves
+// and points, as Gmsh writes them: io/src/partition_boundaries.h), a
+// `partition` cell array in .vtu; Medit has no place for them.
 #pragma once
 
 #include <cstddef>
