@@ -110,46 +110,65 @@ MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& given,
   auto t = std::chrono::steady_clock::now();
   std::optional<detail::ProtectionPlanner> planner;
   detail::ProtectionPlan plan;
-  if (protect) {
-    announce(options, "protecting sharp features");
-    planner.emplace(make_planner(oracle, criteria));
-    plan = planner->plan();
-  }
-  double protect_seconds = seconds_since(t);
   // A ball found reaching into a patch its feature does not bound is shrunk
   // and refinement starts again (it stops early, once the surface rules are
   // done, so a restart costs little). When no ball can shrink any more, or
   // after the last restart, the run goes on and the conflict is reported.
   constexpr int kMaxRestarts = 6;
   std::unique_ptr<detail::Refiner> refiner;
-  double initial = 0, refine = 0;
+  double protect_seconds = 0, initial = 0, refine = 0;
   int restarts = 0;
-  for (bool restart = true; restart;) {
-    refiner =
-        std::make_unique<detail::Refiner>(oracle, criteria, options, protect ? &plan : nullptr);
-    refiner->set_deadline(deadline);
-    t = std::chrono::steady_clock::now();
-    announce(options, "inserting initial points");
-    refiner->insert_initial_points();
-    initial += seconds_since(t);
-    t = std::chrono::steady_clock::now();
-    announce(options, "refining");
-    refiner->refine(protect && restarts < kMaxRestarts);
-    restart = false;
-    const bool out_of_time = refiner->stats().time_limit_reached;
-    if (protect && restarts < kMaxRestarts && !refiner->conflicts().empty() && !out_of_time) {
-      const auto ts = std::chrono::steady_clock::now();
+  // The time limit covers the whole run: protection and the initial points
+  // stop with TimeLimitReached (a needle 4e9 long protected down to its
+  // minimum size once took 16 s at --time-limit 10), refinement with a flag.
+  bool in_protection = false;
+  try {
+    if (protect) {
       announce(options, "protecting sharp features");
-      restart = planner->shrink(refiner->conflicts(), plan);
-      protect_seconds += seconds_since(ts);
-      if (restart) {
-        ++restarts;
-      } else {
-        announce(options, "refining");
-        refiner->refine();  // as small as the minimum size allows: finish this run
-      }
+      in_protection = true;
+      planner.emplace(make_planner(oracle, criteria));
+      planner->set_deadline(deadline);
+      plan = planner->plan();
+      in_protection = false;
     }
-    refine += seconds_since(t);
+    protect_seconds = seconds_since(t);
+    for (bool restart = true; restart;) {
+      refiner =
+          std::make_unique<detail::Refiner>(oracle, criteria, options, protect ? &plan : nullptr);
+      refiner->set_deadline(deadline);
+      t = std::chrono::steady_clock::now();
+      announce(options, "inserting initial points");
+      refiner->insert_initial_points();
+      initial += seconds_since(t);
+      t = std::chrono::steady_clock::now();
+      announce(options, "refining");
+      refiner->refine(protect && restarts < kMaxRestarts);
+      restart = false;
+      const bool out_of_time = refiner->stats().time_limit_reached;
+      if (protect && restarts < kMaxRestarts && !refiner->conflicts().empty() && !out_of_time) {
+        const auto ts = std::chrono::steady_clock::now();
+        announce(options, "protecting sharp features");
+        in_protection = true;
+        restart = planner->shrink(refiner->conflicts(), plan);
+        in_protection = false;
+        protect_seconds += seconds_since(ts);
+        if (restart) {
+          ++restarts;
+        } else {
+          announce(options, "refining");
+          refiner->refine();  // as small as the minimum size allows: finish this run
+        }
+      }
+      refine += seconds_since(t);
+    }
+  } catch (const detail::TimeLimitReached&) {
+    MeshResult stopped;  // no mesh: what the run reached is the time limit
+    if (refiner) stopped.stats = refiner->stats();
+    stopped.stats.time_limit_reached = true;
+    stopped.stats.stopped_in = in_protection ? "protection" : "initial points";
+    stopped.stats.seconds_protect = in_protection ? seconds_since(t) : protect_seconds;
+    stopped.stats.seconds_initial = initial;
+    return stopped;
   }
 
   MeshResult result;

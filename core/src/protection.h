@@ -42,6 +42,7 @@
 #pragma once
 
 #include <algorithm>
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -104,6 +105,10 @@ struct ProtectionPlan {
   double min_radius = 0;
 };
 
+/// The run's time limit passed while protecting the features (or inserting the
+/// initial points); generate_mesh() then returns what it has: no mesh.
+struct TimeLimitReached {};
+
 /// One curve as the planner sees it.
 struct ProtectedCurve {
   CurveInfo info;
@@ -138,8 +143,11 @@ class ProtectionPlanner {
                     const Criteria& criteria, double min_size,
                     const DomainOracle* oracle = nullptr);
 
-  /// Samples every curve and shrinks balls until (B1)-(B3) hold.
+  /// Samples every curve and shrinks balls until (B1)-(B3) hold. Throws
+  /// TimeLimitReached once the deadline (set_deadline) has passed.
   ProtectionPlan plan();
+  /// The run's time limit: plan() and shrink() stop with TimeLimitReached after it.
+  void set_deadline(std::chrono::steady_clock::time_point deadline) { deadline_ = deadline; }
   /// How messages name ball b's feature: "corner N" or "curve NAME".
   std::string name(const BallRef& b) const;
   /// Shrinks the given balls of the last plan by their factors (a refinement
@@ -154,6 +162,10 @@ class ProtectionPlanner {
   std::vector<int> curves_touching(const BallRef& ball) const;
 
  private:
+  /// Throws TimeLimitReached when the deadline has passed; reads the clock
+  /// every `every`-th call only (callers in tight loops pass a larger one).
+  void check_deadline(unsigned every = 1);
+
   struct Cap {
     double arc, value;
   };
@@ -211,6 +223,8 @@ class ProtectionPlanner {
   std::vector<std::string> unresolved_;
   std::size_t unresolved_pairs_ = 0;
   std::vector<char> unresolved_curve_;  ///< per curve: a ball in an unresolved pair
+  std::chrono::steady_clock::time_point deadline_ = std::chrono::steady_clock::time_point::max();
+  unsigned deadline_calls_ = 0;
 };
 
 }  // namespace rdmesh::detail

@@ -47,6 +47,9 @@ class Refiner {
   void refine(bool stop_on_conflict = false);
   /// Refinement stops when the clock passes `deadline` (stats().time_limit_reached).
   void set_deadline(std::chrono::steady_clock::time_point deadline) { deadline_ = deadline; }
+  /// Throws TimeLimitReached once the deadline has passed (the clock is read
+  /// every 256th call): insert_initial_points() stops there.
+  void check_insertion_deadline();
   /// Balls that reached into a patch their feature does not bound (R3 could
   /// not be met there): shrinking them and refining again removes the conflict.
   const std::vector<BallRef>& conflicts() const { return conflicts_; }

@@ -38,9 +38,14 @@ MeshRun mesh_loaded(const Options& opt, const LoadedInput& input, const Criteria
 }
 
 std::string failure_reason(const Options& opt, const MeshRun& run) {
-  if (run.result.stats.time_limit_reached) {
+  const RefinementStats& stats = run.result.stats;
+  if (stats.time_limit_reached && stats.stopped_in != "refinement") {
+    return "the time limit (" + short_number(opt.time_limit) + " s) stopped the run in its " +
+           stats.stopped_in + " phase, before any mesh";
+  }
+  if (stats.time_limit_reached) {
     return "refinement stopped at the time limit (" + short_number(opt.time_limit) + " s) with " +
-           std::to_string(run.result.stats.elements_left) + " elements still queued";
+           std::to_string(stats.elements_left) + " elements still queued";
   }
   if (run.fidelity && !run.fidelity->passed) {
     return "the mesh does not match the model: " + summarize_problems(*run.fidelity);

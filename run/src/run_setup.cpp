@@ -120,8 +120,8 @@ void add_options(CLI::App& app, Options& opt) {
       ->check(finite_number())
       ->check(CLI::Range(0.0, 180.0));
   app.add_option("--time-limit", opt.time_limit,
-                 "Stop refinement after this many seconds of meshing; the run then fails "
-                 "(exit 4) unless --keep-bad-mesh (default: no limit)")
+                 "Stop meshing (protection, initial points, refinement) after this many "
+                 "seconds; the run then fails (exit 4) (default: no limit)")
       ->check(seconds);
   app.add_flag("--keep-bad-mesh", opt.keep_bad_mesh,
                "Write the mesh even when it fails the fidelity check or the time limit "
@@ -392,6 +392,7 @@ nlohmann::json report_json(const Options& opt, const Criteria& criteria, const D
                      {"encroachments", stats.encroachments},
                      {"time_limit_reached", stats.time_limit_reached},
                      {"elements_left", stats.elements_left}};
+  if (stats.time_limit_reached) j["refinement"]["stopped_in"] = stats.stopped_in;
   j["fidelity"] = fidelity ? to_json(*fidelity) : nlohmann::json(nullptr);
   j["guard"] = {{"fired", stats.guard_fired()},
                 {"rejected_points", stats.guard_rejections},

@@ -180,6 +180,31 @@ TEST(CliLimits, ASizeWhoseBallsHoldEveryPatchPointIsAnInputErrorNotAnInternalOne
   EXPECT_EQ(ok.exit_code, 0) << ok.output;
 }
 
+TEST(CliLimits, TheTimeLimitAlsoStopsProtectionAndTheInitialPoints) {
+  // A tetrahedron 4e9 long and 0.016 thick (a mutant of cgal_wedge.off found
+  // by fuzz/cli_campaign.py): its edges are protected down to the minimum
+  // size, 9 s of ball planning and 7 s of inserting them on a 2-core machine,
+  // and --time-limit 10 bounded only refinement. Now the limit stops any phase:
+  // exit 4, one line, no mesh.
+  ScratchDir dir;
+  dir.write("needle.off",
+            "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n"
+            "4294967295 -0.0014027867165072405 -0.016375682947558277\n"
+            "3 0 1 2\n3 2 1 3\n3 0 2 3\n3 1 0 3\n");
+  const CliRun run =
+      run_cli("needle.off -o needle.mesh -q --time-limit 0.2 --report r.json", dir.path());
+  EXPECT_EQ(run.exit_code, 4) << run.output;
+  EXPECT_NE(run.output.find("rdmesh: error: needle.off: the time limit (0.2 s) stopped the run"),
+            std::string::npos)
+      << run.output;
+  EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << run.output;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("needle.mesh")));
+  const nlohmann::json report = nlohmann::json::parse(read_file(dir.file("r.json")));
+  EXPECT_TRUE(report["refinement"]["time_limit_reached"].get<bool>());
+  const std::string phase = report["refinement"]["stopped_in"].get<std::string>();
+  EXPECT_TRUE(phase == "protection" || phase == "initial points") << phase;
+}
+
 TEST(CliLimits, SharedJunkPlyIsRefused) {
   RDMESH_REQUIRE_SHARED_DATA(junk, "bad/junk.ply");
   ScratchDir dir;

@@ -104,6 +104,9 @@ struct RefinementStats {
   /// some of them no longer bad).
   bool time_limit_reached = false;
   std::size_t elements_left = 0;
+  /// Where the time limit stopped the run: "refinement", or "protection" and
+  /// "initial points" (no mesh at all then).
+  std::string stopped_in;
   double seconds_protect = 0.0;  ///< sizing the balls (all rounds)
   double seconds_initial = 0.0;
   double seconds_refine = 0.0;
