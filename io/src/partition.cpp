@@ -44,19 +44,29 @@ bool has_vertex(const std::array<int, 4>& tet, int v) {
   return std::find(tet.begin(), tet.end(), v) != tet.end();
 }
 
-/// The smallest partition among the tetrahedra around `first` that contain all of `others`.
+/// The smallest partition among the tetrahedra around `first` that contain all
+/// of `others`; for an element that is no tetrahedron's face or edge (a feature
+/// edge the refinement could not recover where features come closer than the
+/// minimum size), among the tetrahedra around any of its vertices.
 template <class Others>
 int smallest_partition(const TetMesh& mesh, const VertexTets& vt, int first, const Others& others) {
   int best = 0;
+  auto consider = [&](int t) {
+    const int p = mesh.tet_partition[t];
+    if (best == 0 || p < best) best = p;
+  };
   vt.for_each(first, [&](int t) {
     for (int v : others) {
       if (!has_vertex(mesh.tets[t], v)) return;
     }
-    const int p = mesh.tet_partition[t];
-    if (best == 0 || p < best) best = p;
+    consider(t);
   });
   if (best == 0) {
-    throw InternalError("partition_mesh: an element of the mesh lies on no tetrahedron");
+    vt.for_each(first, consider);
+    for (int v : others) vt.for_each(v, consider);
+  }
+  if (best == 0) {
+    throw InternalError("partition_mesh: a vertex of the mesh lies on no tetrahedron");
   }
   return best;
 }

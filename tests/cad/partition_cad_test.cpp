@@ -68,11 +68,12 @@ TEST_P(PartitionCad, BalancedSmallCutGmshReadsIt) {
   }
 }
 
-// Two solids sharing a face (an interface between subdomains), and a housing
-// with fillets and holes.
+// Two solids sharing a face (an interface between subdomains), a housing
+// with fillets and holes, and a part whose curves come closer than the
+// minimum size (feature edges that are no tetrahedron's edge).
 INSTANTIATE_TEST_SUITE_P(Parts, PartitionCad,
                          ::testing::Values("cadquery_red_cube_blue_cylinder.step",
-                                           "occtsample_MBBGehauseRohteil.step"),
+                                           "occtsample_MBBGehauseRohteil.step", "gmsh_part.step"),
                          [](const auto& info) { return test::file_test_name(info.param); });
 
 }  // namespace

@@ -123,6 +123,37 @@ TEST(Partition, FeatureEdgesGoToTheSmallestPartitionAroundThem) {
   }
 }
 
+// Where features come closer than the minimum size, a feature edge may be no
+// tetrahedron's edge (the shared gmsh_part.step does so): it goes to the
+// smallest partition around its vertices instead of failing as our bug.
+TEST(Partition, AFeatureEdgeOnNoTetrahedronGoesToThePartitionsAroundItsVertices) {
+  const test::CappedCylinderOracle oracle(0.5, 0.6);
+  TetMesh m = generate_mesh(oracle, test::uniform_criteria(0.15)).mesh;
+  ASSERT_FALSE(m.edges.empty());
+  // Two vertices sharing no tetrahedron, joined as an edge of the first curve.
+  const int a = m.tets.front()[0];
+  int b = -1;
+  for (std::size_t v = 0; v < m.vertices.size() && b < 0; ++v) {
+    bool shared = false;
+    for (const auto& t : m.tets) {
+      shared |= std::count(t.begin(), t.end(), a) && std::count(t.begin(), t.end(), int(v));
+    }
+    if (!shared) b = static_cast<int>(v);
+  }
+  ASSERT_GE(b, 0);
+  m.edges.push_back({a, b});
+  m.edge_curve.push_back(m.edge_curve.front());
+  partition_mesh(m, 3);
+  int smallest = 4;
+  for (std::size_t t = 0; t < m.tets.size(); ++t) {
+    const auto& v = m.tets[t];
+    if (std::count(v.begin(), v.end(), a) || std::count(v.begin(), v.end(), b)) {
+      smallest = std::min(smallest, m.tet_partition[t]);
+    }
+  }
+  EXPECT_EQ(m.edge_partition.back(), smallest);
+}
+
 class PartitionFiles : public testing::MeshioTest {};
 
 TEST_F(PartitionFiles, VtuCarriesThePartitionAndGmshReadsTheMsh) {

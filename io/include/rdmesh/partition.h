@@ -7,10 +7,11 @@
 //
 // Every tetrahedron gets one partition 1..n. A triangle, feature edge or
 // corner vertex goes to the smallest partition among the tetrahedra that
-// contain it. The writers then emit them: Gmsh 4.1 partitioned entities (one
-// per model entity and partition, and the partition-boundary surfaces, curves
-// and points, as Gmsh writes them: io/src/partition_boundaries.h), a
-// `partition` cell array in .vtu; Medit has no place for them.
+// contain it (a feature edge that is no tetrahedron's edge, where features
+// come closer than the minimum size: among those around its vertices). The writers then emit them:
+// Gmsh 4.1 partitioned entities (one per model entity and partition, and the partition-boundary
+// surfaces, curves and points, as Gmsh writes them: io/src/partition_boundaries.h), a `partition`
+// cell array in .vtu; Medit has no place for them.
 #pragma once
 
 #include <cstddef>
