@@ -426,6 +426,7 @@ nlohmann::json report_json(const Options& opt, const Criteria& criteria, const D
                        {"edge_removals", improvement.edge_removals},
                        {"vertex_moves", improvement.vertex_moves},
                        {"boundary_moves", improvement.boundary_moves},
+                       {"curve_moves", improvement.curve_moves},
                        {"vertex_insertions", improvement.vertex_insertions},
                        {"sweeps", improvement.sweeps},
                        {"time_limit_reached", improvement.time_limit_reached},
@@ -537,8 +538,9 @@ std::string format_run_summary(const Options& opt, const RefinementStats& stats,
       << improvement.histogram_after[0] + improvement.histogram_after[1] << ", "
       << improvement.edge_removals << " edge removals, " << improvement.face_flips
       << " face flips, " << improvement.vertex_moves << " vertex moves, "
-      << improvement.boundary_moves << " moves along patches, " << improvement.vertex_insertions
-      << " new vertices" << (improvement.time_limit_reached ? " (time limit reached)" : "") << '\n';
+      << improvement.boundary_moves << " moves along patches, " << improvement.curve_moves
+      << " along curves, " << improvement.vertex_insertions << " new vertices"
+      << (improvement.time_limit_reached ? " (time limit reached)" : "") << '\n';
   } else {
     s << "optimization: off\n";
   }

@@ -112,6 +112,7 @@ struct TetImprovementStats {
   std::size_t edge_removals = 0;   ///< an edge and its ring of n tets replaced by 2n - 4 tets
   std::size_t vertex_moves = 0;    ///< vertices on no boundary triangle moved
   std::size_t boundary_moves = 0;  ///< vertices moved along their patch
+  std::size_t curve_moves = 0;     ///< vertices moved along their curve
   /// Vertices added inside a tetrahedron and its neighbours (numbered after the others).
   std::size_t vertex_insertions = 0;
   int sweeps = 0;

@@ -37,6 +37,9 @@ PatchSurface::PatchSurface(const TetMesh& mesh, const DomainOracle& oracle,
       triangles_(mesh.triangles),
       patch_(mesh.vertices.size(), 0),
       feature_(mesh.vertices.size(), 0),
+      curves_(oracle.curves()),
+      curve_(mesh.vertices.size(), 0),
+      chain_(mesh.vertices.size(), {-1, -1}),
       triangles_of_(mesh.vertices.size()) {
   normal0_.reserve(triangles_.size());
   for (std::size_t f = 0; f < triangles_.size(); ++f) {
@@ -51,8 +54,29 @@ PatchSurface::PatchSurface(const TetMesh& mesh, const DomainOracle& oracle,
       patch_[v] = patch_[v] == 0 || patch_[v] == patch ? patch : -1;
     }
   }
+  for (const PatchId& p : mesh.triangle_patch) triangle_patch_.push_back(p.value);
+  // Vertices inside one chain: two feature edges of one curve, no corner.
+  std::vector<int> edges_at(mesh.vertices.size(), 0);
+  for (std::size_t e = 0; e < mesh.edges.size(); ++e) {
+    for (int k = 0; k < 2; ++k) {
+      const int v = mesh.edges[e][k], w = mesh.edges[e][1 - k];
+      const int c = mesh.edge_curve[e].value;
+      if (edges_at[v]++ == 0) {
+        curve_[v] = c;
+        chain_[v] = {w, -1};
+      } else if (curve_[v] == c && edges_at[v] == 2) {
+        chain_[v][1] = w;
+      } else {
+        curve_[v] = -1;
+      }
+    }
+  }
   for (const auto& e : mesh.edges) feature_[e[0]] = feature_[e[1]] = 1;
-  for (const int v : mesh.corner_vertices) feature_[v] = 1;
+  for (const int v : mesh.corner_vertices) feature_[v] = 1, curve_[v] = -1;
+  for (std::size_t v = 0; v < curve_.size(); ++v) {
+    if (edges_at[v] != 2) curve_[v] = 0;
+    curve_[v] = std::max(curve_[v], 0);
+  }
   for (std::size_t v = 0; v < patch_.size(); ++v) {
     if (feature_[v]) patch_[v] = -1;
   }
@@ -83,12 +107,13 @@ bool PatchSurface::keeps_normals(const TetTopology& topo, int v, const Point3& p
 }
 
 bool PatchSurface::near_surface(const TetTopology& topo, int v, const Point3& p) const {
-  const int patch = patch_[v];
+  int patch = 0;
   const auto gap = [&](const Point3& s) {
     const auto foot = project(s, patch);
     return foot ? distance(*foot, s) : std::numeric_limits<double>::infinity();
   };
   for (const int f : triangles_of_[v]) {
+    patch = triangle_patch_[f];
     const auto q = corners_with(topo, triangles_[f], v, p);
     Point3 samples[3] = {(1.0 / 3) * (q[0] + q[1] + q[2]), {}, {}};
     int n = 1;

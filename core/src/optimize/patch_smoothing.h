@@ -45,6 +45,15 @@ class PatchSurface {
   /// The patch (id) of vertex v when it lies on triangles of exactly one patch
   /// and on no feature edge or corner; 0 otherwise.
   int patch_of(int v) const { return v < static_cast<int>(patch_.size()) ? patch_[v] : 0; }
+  /// The curve (id) of vertex v when it lies inside one chain of feature edges
+  /// (two edges of one curve, not a corner); 0 otherwise.
+  int curve_of(int v) const { return v < static_cast<int>(curve_.size()) ? curve_[v] : 0; }
+  /// The other ends of the two feature edges at v (when curve_of(v) != 0).
+  const std::array<int, 2>& chain_neighbours(int v) const { return chain_[v]; }
+  const DomainOracle& oracle() const { return oracle_; }
+  /// The oracle's description of curve `id` (copied once).
+  const CurveInfo& curve_info(int id) const { return curves_[static_cast<std::size_t>(id) - 1]; }
+  double facet_distance(const Point3& p) const { return facet_distance_(p); }
   /// The point of `patch` closest to p (the oracle's projection).
   std::optional<Point3> project(const Point3& p, int patch) const;
   /// The unit normal of v's triangles with v at p (area-weighted mean); zero
@@ -54,7 +63,7 @@ class PatchSurface {
   /// kMaxNormalTurnDeg of the input's.
   bool keeps_normals(const TetTopology& topo, int v, const Point3& p) const;
   /// True when v's triangles, with v at p, have their centroids and the
-  /// midpoints of their edges at v within the facet distance of v's patch, and
+  /// midpoints of their edges at v within the facet distance of their patch, and
   /// (for those on no feature vertex, where R4 bounds it) their circumcentres
   /// within it or no farther from it than before the move.
   bool near_surface(const TetTopology& topo, int v, const Point3& p) const;
@@ -64,8 +73,12 @@ class PatchSurface {
   const ScalarField& facet_distance_;
   std::vector<std::array<int, 3>> triangles_;
   std::vector<Point3> normal0_;  ///< unit normal of each triangle in the input
+  std::vector<int> triangle_patch_;
   std::vector<int> patch_;
   std::vector<char> feature_;  ///< on a feature edge or a corner
+  std::vector<CurveInfo> curves_;
+  std::vector<int> curve_;
+  std::vector<std::array<int, 2>> chain_;
   std::vector<std::vector<int>> triangles_of_;
 };
 

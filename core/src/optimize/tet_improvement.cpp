@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "curve_smoothing.h"
 #include "patch_smoothing.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/parallel_for.h"
@@ -100,6 +101,7 @@ TetImprovementStats improve_tets(TetMesh& mesh, const TetImprovementOptions& opt
   stats.ran = true;
   TetTopology topo(mesh, options.threads);
   std::optional<detail::PatchSurface> patches;
+  std::vector<double> curve_parameters;  // of the vertices inside chains, found once
   if (surface.oracle && options.boundary_moves) {
     patches.emplace(mesh, *surface.oracle, surface.facet_distance);
   }
@@ -143,6 +145,9 @@ TetImprovementStats improve_tets(TetMesh& mesh, const TetImprovementOptions& opt
           ++changes;
         } else if (patches && detail::smooth_on_patch(topo, *patches, v)) {
           ++stats.boundary_moves;
+          ++changes;
+        } else if (patches && detail::smooth_on_curve(topo, *patches, curve_parameters, v)) {
+          ++stats.curve_moves;
           ++changes;
         }
       }
