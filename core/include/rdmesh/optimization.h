@@ -90,7 +90,8 @@ struct TetImprovementOptions {
   /// only for tetrahedra below this angle (degrees; the costliest step).
   double max_insertions = 0.01;
   double insertion_bound_deg = 12;
-  /// Vertices on one patch only slide along it (given the surface, see improve_tets).
+  /// Vertices on one patch only slide along it, and those inside one chain of
+  /// feature edges along their curve (given the surface, see improve_tets).
   bool boundary_moves = true;
   /// Stop after this many seconds; 0 = no limit (the result is then no longer
   /// independent of the machine's speed).

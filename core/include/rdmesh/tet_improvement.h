@@ -6,18 +6,21 @@
 // tetrahedra they replace.
 //
 // What never changes: the vertices' indices, every boundary and interface
-// triangle (TetMesh::triangles) with its patch, the feature edges and
-// corners and the vertices on them. Without a surface, the region of each
-// subdomain does not change either (a flip re-tiles a region of one
-// subdomain; a moved vertex lies on no triangle, feature edge or corner, and
-// its tetrahedra keep one label). With the exact surface (BoundarySurface),
-// a vertex on the triangles of one patch only may also slide along that
-// patch: it stays on the patch (the oracle's projection), its triangles keep
-// their normals within 20 degrees of the input's and stay within the facet
-// distance of the patch, so the regions change only within what the facet
-// distance allows. Every tetrahedron stays positively oriented by CGAL's
-// exact orientation predicate. The result depends only on the input mesh and
-// surface (fixed order: by angle, then by index), unless a time limit stops it.
+// triangle (TetMesh::triangles) with its patch, the feature edges with their
+// curves, and the corners. Without a surface, no vertex on a triangle, feature
+// edge or corner moves, and the region of each subdomain does not change
+// either (a flip re-tiles a region of one subdomain; a moved vertex lies on no
+// triangle, and its tetrahedra keep one label). With the exact surface
+// (BoundarySurface), a vertex on the triangles of one patch only may also
+// slide along that patch (the oracle's projection), and a vertex between two
+// feature edges of one curve (not a corner) along that curve (its exact
+// points); the triangles around it keep their normals within 20 degrees of
+// the input's and stay within the facet distance of their patches, its
+// feature edges within the facet distance of the curve, so the regions change
+// only within what the facet distance allows. Every tetrahedron stays
+// positively oriented by CGAL's exact orientation predicate. The result
+// depends only on the input mesh and surface (fixed order: by angle, then by
+// index), unless a time limit stops it.
 #pragma once
 
 #include "rdmesh/geometry.h"

@@ -4,7 +4,8 @@
 // 2-3 flips of its four faces, if one strictly raises the smallest angle of
 // what it replaces; else the smoothing of its free vertices; if it is still
 // there and below the bound, a new vertex inside it and its neighbours.
-// Given the exact surface, the vertices on one patch only slide along it too.
+// Given the exact surface, the vertices on one patch only slide along it, and
+// those inside one chain of feature edges along their curve.
 // Vertices keep their indices; new ones come after them.
 #include "rdmesh/tet_improvement.h"
 
