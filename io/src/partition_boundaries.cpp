@@ -32,35 +32,74 @@ std::array<int, N> sorted(std::array<int, N> a) {
   return a;
 }
 
-/// The mid-edge node of each tetrahedron edge of a second-order mesh.
+/// Elements grouped by key, in key order.
+using Groups = std::map<Key, std::vector<std::vector<int>>>;
+
+/// The mid-edge nodes of a second-order mesh on the edges of the given
+/// elements (from the tetrahedra and the patch triangles that have them).
 class MidNodes {
  public:
-  explicit MidNodes(const TetMesh& mesh) {
+  MidNodes(const TetMesh& mesh, const std::vector<const Groups*>& groups) {
     if (mesh.tet_mid_nodes.size() != mesh.tets.size() || mesh.tets.empty()) return;
+    for (const Groups* g : groups) {
+      for (const auto& [key, elements] : *g) {
+        for (const auto& e : elements)
+          for_each_edge(e, [&](int a, int b) { edges_.push_back(sorted_pair(a, b)); });
+      }
+    }
+    std::sort(edges_.begin(), edges_.end());
+    edges_.erase(std::unique(edges_.begin(), edges_.end()), edges_.end());
+    mid_.assign(edges_.size(), -1);
+    auto found = [&](int a, int b, int node) {
+      const long i = index(a, b);
+      if (i >= 0) mid_[i] = node;
+    };
     for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
       for (std::size_t k = 0; k < kTetEdges.size(); ++k) {
-        const int a = mesh.tets[t][kTetEdges[k][0]], b = mesh.tets[t][kTetEdges[k][1]];
-        mid_.emplace(std::minmax(a, b), mesh.tet_mid_nodes[t][k]);
+        found(mesh.tets[t][kTetEdges[k][0]], mesh.tets[t][kTetEdges[k][1]],
+              mesh.tet_mid_nodes[t][k]);
+      }
+    }
+    for (std::size_t f = 0; f < mesh.triangle_mid_nodes.size(); ++f) {
+      for (std::size_t k = 0; k < kTriangleEdges.size(); ++k) {
+        found(mesh.triangles[f][kTriangleEdges[k][0]], mesh.triangles[f][kTriangleEdges[k][1]],
+              mesh.triangle_mid_nodes[f][k]);
       }
     }
   }
   /// Appends the mid nodes of the edges 01, 12, 20 (or 01 for a line, none
   /// for a point) of `nodes`.
   void complete(std::vector<int>& nodes) const {
-    const std::size_t n = nodes.size();
-    if (mid_.empty() || n < 2) return;
-    const std::size_t edges = n == 2 ? 1 : n;
-    for (std::size_t i = 0; i < edges; ++i) {
-      nodes.push_back(mid_.at(std::minmax(nodes[i], nodes[(i + 1) % n])));
-    }
+    if (mid_.empty()) return;
+    const std::vector<int> ends = nodes;
+    for_each_edge(ends, [&](int a, int b) {
+      const long i = index(a, b);
+      const int node = i >= 0 ? mid_[i] : -1;
+      if (node < 0) {
+        throw InternalError("write_gmsh41: a partition-boundary edge has no mid-edge node");
+      }
+      nodes.push_back(node);
+    });
   }
 
  private:
-  std::map<std::pair<int, int>, int> mid_;
+  /// The edges 01, 12, 20 of a triangle, 01 of a line, none of a point.
+  template <class F>
+  static void for_each_edge(const std::vector<int>& e, F f) {
+    const std::size_t n = e.size();
+    if (n < 2) return;
+    for (std::size_t i = 0; i < (n == 2 ? 1 : n); ++i) f(e[i], e[(i + 1) % n]);
+  }
+  static std::pair<int, int> sorted_pair(int a, int b) { return {std::min(a, b), std::max(a, b)}; }
+  /// The position of edge (a, b) in edges_, -1 if absent.
+  long index(int a, int b) const {
+    const auto key = sorted_pair(a, b);
+    auto it = std::lower_bound(edges_.begin(), edges_.end(), key);
+    return it != edges_.end() && *it == key ? it - edges_.begin() : -1;
+  }
+  std::vector<std::pair<int, int>> edges_;
+  std::vector<int> mid_;
 };
-
-/// Elements grouped by key, in key order.
-using Groups = std::map<Key, std::vector<std::vector<int>>>;
 
 /// The connected pieces of `elements` (sharing `shared` nodes: 2 for faces
 /// sharing an edge, 1 for lines sharing a vertex that is not `cut`), each in
@@ -154,7 +193,6 @@ std::vector<int> smallest_id(std::size_t num_vertices, const std::vector<std::ar
 }  // namespace
 
 PartitionBoundaries partition_boundaries(const TetMesh& mesh) {
-  const MidNodes mid(mesh);
   const std::size_t nv = mesh.vertices.size();
   // Faces between partitions, not on a patch.
   std::vector<std::array<int, 3>> model_faces;
@@ -258,6 +296,7 @@ PartitionBoundaries partition_boundaries(const TetMesh& mesh) {
                                        : Key{3, subdomain_at[v], std::move(parts)};
     points[std::move(key)].push_back({v});
   });
+  const MidNodes mid(mesh, {&surfaces, &curves});
   // Curves end at points and corners, as Gmsh's do.
   std::vector<char> ends = is_corner;
   for (const auto& [key, elements] : points) {

@@ -183,5 +183,38 @@ TEST_F(PartitionFiles, VtuCarriesThePartitionAndGmshReadsTheMsh) {
   EXPECT_NE(again.find("$PartitionedEntities\n4\n"), std::string::npos);
 }
 
+// Second order: the partition-boundary triangles and lines are 6- and 3-node
+// elements whose mid nodes are the tetrahedra's mid-edge nodes.
+TEST_F(PartitionFiles, SecondOrderBoundariesUseTheTetrahedraMidNodes) {
+  const ImplicitOracle oracle = test::nested_spheres();
+  TetMesh mesh = generate_mesh(oracle, test::uniform_criteria(0.12)).mesh;
+  make_second_order(mesh, oracle);
+  partition_mesh(mesh, 4);
+  write_mesh(mesh, dir_.file("p2.msh"));
+  const std::string text = testing::read_text(dir_.file("p2.msh"));
+  const auto entities = testing::expect_partition_boundaries(mesh, text);
+  EXPECT_GT(entities[2], 0u);
+  std::map<std::pair<int, int>, int> mid;
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+    for (std::size_t k = 0; k < kTetEdges.size(); ++k) {
+      const int a = mesh.tets[t][kTetEdges[k][0]], b = mesh.tets[t][kTetEdges[k][1]];
+      mid[std::minmax(a, b)] = mesh.tet_mid_nodes[t][k];
+    }
+  }
+  std::size_t checked = 0;
+  for (const auto& [key, e] : testing::read_msh_partitions(text).entities) {
+    if (e.partitions.size() < 2 || e.dim == 0) continue;
+    for (const auto& nodes : e.elements) {
+      const std::size_t n = e.dim == 2 ? 3 : 2;
+      ASSERT_EQ(nodes.size(), e.dim == 2 ? 6u : 3u);
+      for (std::size_t i = 0; i < (n == 3 ? 3 : 1); ++i) {
+        EXPECT_EQ(nodes[n + i], mid.at(std::minmax(nodes[i], nodes[(i + 1) % n])));
+        ++checked;
+      }
+    }
+  }
+  EXPECT_GT(checked, 0u);
+}
+
 }  // namespace
 }  // namespace rdmesh
