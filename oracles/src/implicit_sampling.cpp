@@ -258,6 +258,27 @@ void ImplicitOracle::sample_box() {
     }
     out.insert(out.end(), points.begin(), points.end());
   }
+  // A domain far smaller than the grid's cells (a sphere of radius 1e-160,
+  // found by fuzz/cli_campaign.py) shows its surface as one point: refinement
+  // cannot start from fewer than four.
+  // (A domain that reaches the box is refused with its own reason later:
+  // domain_file_limits.h.)
+  std::size_t seeds = 0;
+  for (const std::vector<Point3>& points : initial_points_) seeds += points.size();
+  bool reaches_box = false;
+  for (int k = 0; k < m && !reaches_box; ++k) {
+    for (int j = 0; j < m && !reaches_box; ++j) {
+      for (int i = 0; i < m && !reaches_box; ++i) {
+        const bool face = i == 0 || j == 0 || k == 0 || i == m - 1 || j == m - 1 || k == m - 1;
+        reaches_box = face && labels[node_index(i, j, k)] != 0;
+      }
+    }
+  }
+  if (seeds < 4 && !reaches_box) {
+    throw InputError("the surface was found at fewer than 4 distinct points (" +
+                     std::to_string(seeds) + ") on a grid of " + std::to_string(cells) +
+                     " cells per axis: the domain is far smaller than its box or its sizes");
+  }
 
   // Names: "a/b", with ":function" when several functions bound the same pair.
   const int n_functions = static_cast<int>(functions_.size());

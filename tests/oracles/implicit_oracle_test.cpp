@@ -204,6 +204,17 @@ TEST(ImplicitOracle, ConstructorErrors) {
               ImplicitOracle(cube(1.2), {f}, {{"in", {0}, {}}, {"again", {0}, {}}});
             }).find("subdomain 'again' matches no point of the box"),
             std::string::npos);
+  // A sphere of radius 1e-160 (a campaign mutant: "x^2 + y^2 + z^2 - 1.E-320")
+  // holds one grid node and its surface shows as one point: refinement cannot
+  // start. It was exit 3 ("initial points span no volume").
+  auto speck = [](const Point3& p) { return p.x * p.x + p.y * p.y + p.z * p.z - 1e-320; };
+  EXPECT_NE(message([&] {
+              ImplicitOracle(cube(1.2), {speck});
+            }).find("the surface was found at fewer than 4 distinct points (1)"),
+            std::string::npos);
+  // A small sphere still has its four points and more.
+  auto small = [](const Point3& p) { return p.x * p.x + p.y * p.y + p.z * p.z - 0.01; };
+  EXPECT_GE(ImplicitOracle(cube(1.2), {small}).initial_points(PatchId(1)).size(), 4u);
 }
 
 }  // namespace
