@@ -128,10 +128,10 @@ void bind_mesh(py::module_& m) {
             opt.write = parse_write_options(opt.output, args);
             if (!p.input.empty() && std::filesystem::exists(p.input)) run::check_paths(opt);
             run::check_output_format(opt.output, opt.write);
-            if (!p.mesh.tet_partition.empty()) {  // Medit cannot carry them
+            if (!p.mesh.tet_partition.empty()) {  // Medit and MSH 2.2 cannot carry them
               run::FemOptions fem;
               fem.partitions = 1;
-              run::check_fem_options(fem, p.input, opt.output, false);
+              run::check_fem_options(fem, p.input, opt.output, false, opt.write.msh22);
             }
             run::check_writable(opt.output);
             py::gil_scoped_release release;

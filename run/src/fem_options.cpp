@@ -70,7 +70,7 @@ AppliedSizes apply_size_options(const FemOptions& opt, const std::optional<SizeS
 }
 
 void check_fem_options(const FemOptions& opt, const std::string& input, const std::string& output,
-                       bool surface_only) {
+                       bool surface_only, bool msh22) {
   if (opt.partitions == 0) return;
   if (surface_only) {
     throw InputError(input, "--partitions needs tetrahedra: it cannot go with --surface-only");
@@ -78,6 +78,11 @@ void check_fem_options(const FemOptions& opt, const std::string& input, const st
   if (!output.empty() && format_from_path(output) == MeshFormat::Medit) {
     throw InputError(output,
                      "a Medit file cannot carry partitions (--partitions): write .msh or .vtu");
+  }
+  if (!output.empty() && msh22 && format_from_path(output) == MeshFormat::Gmsh41) {
+    throw InputError(output,
+                     "rdmesh writes no partitions (--partitions) in MSH 2.2 (--format msh22): "
+                     "write MSH 4.1 (the default) or .vtu");
   }
 }
 

@@ -452,7 +452,7 @@ void check_outputs(const Options& opt) {
     check_output_format(opt.output, opt.write);  // unknown extension, binary Medit...
     check_writable(opt.output);
   }
-  check_fem_options(opt.fem, opt.input, opt.output, opt.surface_only);
+  check_fem_options(opt.fem, opt.input, opt.output, opt.surface_only, opt.write.msh22);
   if (!opt.report.empty()) check_writable(opt.report);
   if (!opt.picture.path.empty()) (void)picture_options(opt.picture, opt.input);
 }

@@ -109,13 +109,19 @@ TEST(CliFem, ImpossiblePartitionsAreInputErrorsBeforeMeshing) {
   const std::string sample = "'" + source_path("samples/sphere.json") + "'";
   for (const std::string args :
        {"--partitions 2 -o out.mesh", "--partitions 0 -o out.msh",
-        "--partitions 2 --surface-only -o out.msh", "--partitions 100000 --size 0.5 -o out.msh"}) {
+        "--partitions 2 --surface-only -o out.msh", "--partitions 100000 --size 0.5 -o out.msh",
+        "--partitions 2 --format msh22 -o out.msh"}) {
     const CliRun run = run_cli(sample + " " + args, dir.path());
     EXPECT_EQ(run.exit_code, 2) << args << ": " << run.output;
     EXPECT_EQ(run.output.rfind("rdmesh: error: ", 0), 0u) << run.output;
     EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << run.output;
     EXPECT_EQ(dir.entries(), 0u) << args;
   }
+  // MSH 2.2 was written without its partitions, silently.
+  const CliRun msh22 = run_cli(sample + " --partitions 2 --format msh22 -o out.msh", dir.path());
+  EXPECT_NE(msh22.output.find("out.msh: rdmesh writes no partitions (--partitions) in MSH 2.2"),
+            std::string::npos)
+      << msh22.output;
 }
 
 TEST(CliFem, EntitySizesFromOptionsAndFileAreReported) {

@@ -29,10 +29,10 @@ struct FemOptions {
 void add_fem_options(CLI::App& app, FemOptions& opt);
 
 /// Before meshing: refuses (InputError) what the options cannot give:
-/// partitions of a surface-only mesh, partitions in a Medit file (`output`
-/// empty: no file yet).
+/// partitions of a surface-only mesh, partitions in a Medit file or in MSH 2.2
+/// (`msh22`: its writer has no partitioned entities) (`output` empty: no file yet).
 void check_fem_options(const FemOptions& opt, const std::string& input, const std::string& output,
-                       bool surface_only);
+                       bool surface_only, bool msh22 = false);
 
 /// The sizes asked and what applying them found.
 struct AppliedSizes {
