@@ -3,13 +3,11 @@
 #include <cmath>
 #include <limits>
 
+#include "../simplex_geometry.h"
 #include "tet_smoothing.h"
 
 namespace rdmesh::detail {
 namespace {
-
-constexpr int kIterations = 8;
-constexpr int kHalvings = 10;
 
 /// The triangle (a, b, c)'s vertices with vertex v at p.
 std::array<Point3, 3> corners_with(const TetTopology& topo, const std::array<int, 3>& f, int v,
@@ -20,13 +18,6 @@ std::array<Point3, 3> corners_with(const TetTopology& topo, const std::array<int
 }
 
 Point3 area_normal(const std::array<Point3, 3>& q) { return cross(q[1] - q[0], q[2] - q[0]); }
-
-/// The centre of the circle through q[0], q[1], q[2] (not flat).
-Point3 circumcenter(const std::array<Point3, 3>& q) {
-  const Point3 ab = q[1] - q[0], ad = q[2] - q[0], n = cross(ab, ad);
-  return q[0] + (1 / (2 * squared_norm(n))) *
-                    (squared_norm(ab) * cross(ad, n) + squared_norm(ad) * cross(n, ab));
-}
 
 }  // namespace
 
@@ -128,10 +119,10 @@ bool PatchSurface::near_surface(const TetTopology& topo, int v, const Point3& p)
     // within the facet distance, or no farther than before the move.
     const auto& t = triangles_[f];
     if (feature_[t[0]] || feature_[t[1]] || feature_[t[2]]) continue;
-    const Point3 c = circumcenter(q);
+    const Point3 c = triangle_circumcenter(q[0], q[1], q[2]);
     if (const double dc = gap(c); !(dc <= facet_distance_(c))) {
       const auto q0 = corners_with(topo, triangles_[f], v, topo.point(v));
-      if (!(dc <= gap(circumcenter(q0)))) return false;
+      if (!(dc <= gap(triangle_circumcenter(q0[0], q0[1], q0[2])))) return false;
     }
   }
   return true;
@@ -169,19 +160,12 @@ bool smooth_on_patch(TetTopology& topo, const PatchSurface& surface, int v) {
     path.push_back(at);
     return true;
   };
-  for (int it = 0; it < kIterations; ++it) {
-    // The ascent direction of the star's worst tetrahedra, in the tangent plane.
-    Point3 g = star.ascent(at, 1e-4 * nearest);
+  // The ascent direction of the star's worst tetrahedra, in the tangent plane.
+  const auto tangent = [&](const Point3& g) {
     const Point3 n = surface.normal_at(topo, v, at);
-    g = g - dot(g, n) * n;
-    const double len = norm(g);
-    if (!(len > 0) || !std::isfinite(len)) break;
-    const Point3 dir = (1.0 / len) * g;
-    double step = 0.2 * nearest;
-    bool moved = false;
-    for (int k = 0; k < kHalvings && !moved; ++k, step *= 0.5) moved = try_at(at + step * dir);
-    if (!moved) break;
-  }
+    return g - dot(g, n) * n;
+  };
+  ascend(star, at, nearest, tangent, try_at);
   // The last position whose triangles stay within the facet distance (the
   // distance is checked once, not at every step: it costs 9 to 24 projections).
   for (auto p = path.rbegin(); p != path.rend(); ++p) {

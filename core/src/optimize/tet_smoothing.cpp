@@ -8,8 +8,6 @@
 namespace rdmesh::detail {
 namespace {
 
-constexpr int kIterations = 8;
-constexpr int kHalvings = 10;
 /// Tetrahedra within this many degrees of the worst one are raised together.
 constexpr double kActive = 1.0;
 
@@ -80,23 +78,15 @@ Point3 Star::gradient(std::size_t i, const Point3& p, double h) const {
 }
 
 double climb(const Star& star, Point3& at, double q, double nearest) {
-  for (int it = 0; it < kIterations; ++it) {
-    const Point3 g = star.ascent(at, 1e-4 * nearest);
-    const double len = norm(g);
-    if (!(len > 0) || !std::isfinite(len)) break;
-    const Point3 dir = (1.0 / len) * g;
-    double step = 0.2 * nearest;
-    bool moved = false;
-    for (int k = 0; k < kHalvings && !moved; ++k, step *= 0.5) {
-      const Point3 p = at + step * dir;
-      if (const double qp = star.min_quality(p, q); qp > q) {
+  ascend(
+      star, at, nearest, [](const Point3& g) { return g; },
+      [&](const Point3& p) {
+        const double qp = star.min_quality(p, q);
+        if (!(qp > q)) return false;
         at = p;
         q = qp;
-        moved = true;
-      }
-    }
-    if (!moved) break;
-  }
+        return true;
+      });
   return q;
 }
 

@@ -10,6 +10,7 @@
 // (and its volume) is the same.
 #pragma once
 
+#include <cmath>
 #include <utility>
 #include <vector>
 
@@ -45,6 +46,26 @@ class Star {
   std::vector<Tet> tets_;
   std::vector<int> slot_;
 };
+
+/// The search under every climb: up to kClimbSteps steps from `at` (the
+/// caller's position, which `take` moves) along the star's ascent direction
+/// there, passed through `direction` (into a tangent plane, say), each the
+/// first of kClimbHalvings halvings of 0.2 `nearest` that `take(p)` accepts;
+/// it stops when none is.
+constexpr int kClimbSteps = 8, kClimbHalvings = 10;
+template <class Direction, class Take>
+void ascend(const Star& star, const Point3& at, double nearest, Direction direction, Take take) {
+  for (int it = 0; it < kClimbSteps; ++it) {
+    const Point3 g = direction(star.ascent(at, 1e-4 * nearest));
+    const double len = norm(g);
+    if (!(len > 0) || !std::isfinite(len)) break;
+    const Point3 dir = (1.0 / len) * g;
+    double step = 0.2 * nearest;
+    bool moved = false;
+    for (int k = 0; k < kClimbHalvings && !moved; ++k, step *= 0.5) moved = take(at + step * dir);
+    if (!moved) break;
+  }
+}
 
 /// Climbs the star's smallest angle from `at` (where it is q, every
 /// tetrahedron positive), by steps of at most 0.2 `nearest`; moves `at` and
