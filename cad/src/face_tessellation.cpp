@@ -115,7 +115,7 @@ class Builder {
         out_(out) {
     planar_ = f.kind == SurfaceKind::plane;
     face_size_ = f.box.diagonal();
-    boundary_segments(f, f.cells.segments, f.cells.fine, &f.cells.poles);
+    boundary_segments(f, f.cells.segments, f.cells.fine, f.cells.poles);
     for (const UvSegment& seg : f.cells.segments) {
       f.cells.box_margin = std::max(f.cells.box_margin, seg.reach);
     }

@@ -83,7 +83,7 @@ double uv_reach(const GeomAdaptor_Surface& s, const UvSegment& chord, bool degen
 }  // namespace
 
 void boundary_segments(const FacePatch& f, std::vector<UvSegment>& out,
-                       std::vector<UvSegment>& fine, std::vector<UvSegment>* poles) {
+                       std::vector<UvSegment>& fine, std::vector<UvSegment>& poles) {
   out.clear();
   fine.clear();
   std::vector<double> edge_tolerance, fine_tolerance;  // per chord
@@ -156,13 +156,11 @@ void boundary_segments(const FacePatch& f, std::vector<UvSegment>& out,
     s.reach += margin + 2 * uv_reach(surface, s, pole, tolerance, kReachCap * uv_size);
   };
   for (std::size_t i = 0; i < out.size(); ++i) widen(out[i], edge_tolerance[i], degenerated[i]);
-  if (poles) {
-    poles->clear();
-    for (std::size_t i = 0; i < out.size(); ++i) {
-      if (!degenerated[i]) continue;
-      poles->push_back(out[i]);
-      poles->back().reach += 2 * kReachCap * uv_size;
-    }
+  poles.clear();
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    if (!degenerated[i]) continue;
+    poles.push_back(out[i]);
+    poles.back().reach += 2 * kReachCap * uv_size;
   }
   for (std::size_t i = 0; i < fine.size(); ++i) {
     widen(fine[i], fine_tolerance[i], fine_degenerated[i]);

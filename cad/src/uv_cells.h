@@ -47,11 +47,10 @@ struct UvSegment {
   int fine_first = 0, fine_count = 0;
 };
 
-/// The face's pcurves as chords, and their finer chords (see the file comment).
-/// `poles`, when given, gets the chords of degenerated edges with a wide tube
-/// (see face_tessellation.cpp: the tessellation stays fine next to a pole).
+/// The face's pcurves as chords, and their finer chords (see the file comment);
+/// `poles` gets the chords of degenerated edges with a wide tube (UvCells::near_pole).
 void boundary_segments(const FacePatch& f, std::vector<UvSegment>& chords,
-                       std::vector<UvSegment>& fine, std::vector<UvSegment>* poles = nullptr);
+                       std::vector<UvSegment>& fine, std::vector<UvSegment>& poles);
 
 class UvCells {
  public:
