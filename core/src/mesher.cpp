@@ -86,6 +86,18 @@ void announce(const MeshOptions& options, const char* phase) {
 
 }  // namespace
 
+const char* phase_name(MeshingPhase phase) {
+  switch (phase) {
+    case MeshingPhase::protection:
+      return "protection";
+    case MeshingPhase::initial_points:
+      return "initial points";
+    case MeshingPhase::refinement:
+      break;
+  }
+  return "refinement";
+}
+
 MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& given,
                          const MeshOptions& options) {
   given.validate();
@@ -165,7 +177,8 @@ MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& given,
     MeshResult stopped;  // no mesh: what the run reached is the time limit
     if (refiner) stopped.stats = refiner->stats();
     stopped.stats.time_limit_reached = true;
-    stopped.stats.stopped_in = in_protection ? "protection" : "initial points";
+    stopped.stats.stopped_in =
+        in_protection ? MeshingPhase::protection : MeshingPhase::initial_points;
     stopped.stats.seconds_protect = in_protection ? seconds_since(t) : protect_seconds;
     stopped.stats.seconds_initial = initial;
     return stopped;

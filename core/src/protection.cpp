@@ -175,7 +175,7 @@ void ProtectionPlanner::sample_curve(CurveData& d) {
     // measured at (a uniform rescaling would shift a long curve's far samples).
     std::vector<double> arcs{a0}, steps;
     while (arcs.back() < a1) {
-      check_deadline(1024);
+      deadline_.check(1024);
       // Shortened so that the jittered chords below stay within the step.
       steps.push_back(step_at(d, arcs.back()) / (1 + 2 * kJitter));
       arcs.push_back(arcs.back() + steps.back());
@@ -409,7 +409,7 @@ bool ProtectionPlanner::separate_balls(bool record) {
   std::vector<double> factor(balls.size(), 1.0);
   bool conflict = false;
   for (std::size_t k = 0; k < balls.size(); ++k) {
-    check_deadline(256);
+    deadline_.check(256);
     const Ball& b = balls[k];
     const Grid& grids = b.moved ? all : moved;
     for (auto g = grids.lower_bound(level[k]); g != grids.end(); ++g) {
@@ -516,16 +516,11 @@ bool ProtectionPlanner::keep_off_patches() {
   return changed;
 }
 
-void ProtectionPlanner::check_deadline(unsigned every) {
-  if (++deadline_calls_ % every != 0) return;
-  if (std::chrono::steady_clock::now() > deadline_) throw TimeLimitReached{};
-}
-
 void ProtectionPlanner::resolve() {
   // Every round shrinks some ball by a factor < 1 and no ball goes below the
   // minimum size, so the rounds end; the bound is a backstop.
   for (int round = 0; round < 1000; ++round) {
-    check_deadline();
+    deadline_.check(1);
     for (CurveData& d : curves_) {
       if (d.dirty) sample_curve(d);
       d.dirty = false;

@@ -42,10 +42,10 @@
 #pragma once
 
 #include <algorithm>
-#include <chrono>
 #include <string>
 #include <vector>
 
+#include "deadline.h"
 #include "rdmesh/criteria.h"
 #include "rdmesh/curve.h"
 #include "rdmesh/oracle.h"
@@ -105,10 +105,6 @@ struct ProtectionPlan {
   double min_radius = 0;
 };
 
-/// The run's time limit passed while protecting the features (or inserting the
-/// initial points); generate_mesh() then returns what it has: no mesh.
-struct TimeLimitReached {};
-
 /// One curve as the planner sees it.
 struct ProtectedCurve {
   CurveInfo info;
@@ -147,7 +143,7 @@ class ProtectionPlanner {
   /// TimeLimitReached once the deadline (set_deadline) has passed.
   ProtectionPlan plan();
   /// The run's time limit: plan() and shrink() stop with TimeLimitReached after it.
-  void set_deadline(std::chrono::steady_clock::time_point deadline) { deadline_ = deadline; }
+  void set_deadline(Deadline::Clock::time_point at) { deadline_.set(at); }
   /// How messages name ball b's feature: "corner N" or "curve NAME".
   std::string name(const BallRef& b) const;
   /// Shrinks the given balls of the last plan by their factors (a refinement
@@ -162,10 +158,6 @@ class ProtectionPlanner {
   std::vector<int> curves_touching(const BallRef& ball) const;
 
  private:
-  /// Throws TimeLimitReached when the deadline has passed; reads the clock
-  /// every `every`-th call only (callers in tight loops pass a larger one).
-  void check_deadline(unsigned every = 1);
-
   struct Cap {
     double arc, value;
   };
@@ -223,8 +215,7 @@ class ProtectionPlanner {
   std::vector<std::string> unresolved_;
   std::size_t unresolved_pairs_ = 0;
   std::vector<char> unresolved_curve_;  ///< per curve: a ball in an unresolved pair
-  std::chrono::steady_clock::time_point deadline_ = std::chrono::steady_clock::time_point::max();
-  unsigned deadline_calls_ = 0;
+  Deadline deadline_;
 };
 
 }  // namespace rdmesh::detail

@@ -34,12 +34,6 @@ Refiner::Refiner(const DomainOracle& oracle, const Criteria& criteria, const Mes
   load_curves();
 }
 
-void Refiner::check_insertion_deadline() {
-  if (++steps_since_clock_ < 256) return;
-  steps_since_clock_ = 0;
-  if (std::chrono::steady_clock::now() > deadline_) throw TimeLimitReached{};
-}
-
 void Refiner::insert_initial_points() {
   if (plan_) {
     insert_protecting_balls();
@@ -50,7 +44,7 @@ void Refiner::insert_initial_points() {
   std::size_t offered = 0, kept_out = 0;  // patch points, and those the curves kept out
   for (const PatchInfo& patch : oracle_.patches()) {
     for (const Point3& p : oracle_.initial_points(patch.id)) {
-      check_insertion_deadline();
+      deadline_.check(256);
       ++offered;
       if (plan_) {
         // Nothing is ever inserted inside a protecting ball.
@@ -175,14 +169,11 @@ void Refiner::refine(bool stop_on_conflict) {
       break;
     }
     if (options_.progress && ++insertions_since_progress_ >= 4096) report_progress();
-    if (++steps_since_clock_ >= 256) {
-      steps_since_clock_ = 0;
-      if (std::chrono::steady_clock::now() > deadline_) {
-        stats_.time_limit_reached = true;
-        stats_.stopped_in = "refinement";
-        stats_.elements_left = arc_queue_.size() + facet_queue_.size() + cell_queue_.size();
-        break;
-      }
+    if (deadline_.passed(256)) {
+      stats_.time_limit_reached = true;
+      stats_.stopped_in = MeshingPhase::refinement;
+      stats_.elements_left = arc_queue_.size() + facet_queue_.size() + cell_queue_.size();
+      break;
     }
   }
   if (options_.progress) report_progress();

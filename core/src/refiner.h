@@ -46,10 +46,9 @@ class Refiner {
   /// a patch its feature does not bound (see conflicts()).
   void refine(bool stop_on_conflict = false);
   /// Refinement stops when the clock passes `deadline` (stats().time_limit_reached).
-  void set_deadline(std::chrono::steady_clock::time_point deadline) { deadline_ = deadline; }
-  /// Throws TimeLimitReached once the deadline has passed (the clock is read
-  /// every 256th call): insert_initial_points() stops there.
-  void check_insertion_deadline();
+  /// insert_initial_points() stops there with TimeLimitReached, refine() with
+  /// RefinementStats::time_limit_reached.
+  void set_deadline(Deadline::Clock::time_point at) { deadline_.set(at); }
   /// Balls that reached into a patch their feature does not bound (R3 could
   /// not be met there): shrinking them and refining again removes the conflict.
   const std::vector<BallRef>& conflicts() const { return conflicts_; }
@@ -209,8 +208,7 @@ class Refiner {
 
   RefinementStats stats_;
   std::chrono::steady_clock::time_point start_time_;
-  std::chrono::steady_clock::time_point deadline_ = std::chrono::steady_clock::time_point::max();
-  std::size_t steps_since_clock_ = 0;
+  Deadline deadline_;  ///< read every 256th insertion or refinement step
   std::size_t insertions_since_progress_ = 0;
 };
 

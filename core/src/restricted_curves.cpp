@@ -129,7 +129,7 @@ void Refiner::insert_protecting_balls() {
   std::size_t shared = 0;  // balls equal to an earlier one (coincident features)
   Cell_handle hint;
   for (const std::size_t k : order) {
-    check_insertion_deadline();
+    deadline_.check(256);
     const Ball& b = balls[k];
     const Weighted_point wp(points[k], b.radius * b.radius);
     const Vertex_handle v = tr_.insert(wp, hint);

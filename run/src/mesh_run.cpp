@@ -39,9 +39,9 @@ MeshRun mesh_loaded(const Options& opt, const LoadedInput& input, const Criteria
 
 std::string failure_reason(const Options& opt, const MeshRun& run) {
   const RefinementStats& stats = run.result.stats;
-  if (stats.time_limit_reached && stats.stopped_in != "refinement") {
+  if (stats.time_limit_reached && stats.stopped_in != MeshingPhase::refinement) {
     return "the time limit (" + short_number(opt.time_limit) + " s) stopped the run in its " +
-           stats.stopped_in + " phase, before any mesh";
+           phase_name(stats.stopped_in) + " phase, before any mesh";
   }
   if (stats.time_limit_reached) {
     return "refinement stopped at the time limit (" + short_number(opt.time_limit) + " s) with " +

@@ -392,7 +392,7 @@ nlohmann::json report_json(const Options& opt, const Criteria& criteria, const D
                      {"encroachments", stats.encroachments},
                      {"time_limit_reached", stats.time_limit_reached},
                      {"elements_left", stats.elements_left}};
-  if (stats.time_limit_reached) j["refinement"]["stopped_in"] = stats.stopped_in;
+  if (stats.time_limit_reached) j["refinement"]["stopped_in"] = phase_name(stats.stopped_in);
   j["fidelity"] = fidelity ? to_json(*fidelity) : nlohmann::json(nullptr);
   j["guard"] = {{"fired", stats.guard_fired()},
                 {"rejected_points", stats.guard_rejections},

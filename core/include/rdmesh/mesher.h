@@ -67,6 +67,11 @@ struct MeshOptions {
   int threads = 0;
 };
 
+/// The phases a time limit can stop (RefinementStats::stopped_in).
+enum class MeshingPhase { protection, initial_points, refinement };
+/// "protection", "initial points", "refinement": as messages and the report name them.
+const char* phase_name(MeshingPhase phase);
+
 /// What refinement did, for the report.
 struct RefinementStats {
   std::size_t initial_points = 0;
@@ -104,9 +109,9 @@ struct RefinementStats {
   /// some of them no longer bad).
   bool time_limit_reached = false;
   std::size_t elements_left = 0;
-  /// Where the time limit stopped the run: "refinement", or "protection" and
-  /// "initial points" (no mesh at all then).
-  std::string stopped_in;
+  /// Where the time limit stopped the run (with time_limit_reached): in
+  /// refinement, or before any mesh.
+  MeshingPhase stopped_in = MeshingPhase::refinement;
   double seconds_protect = 0.0;  ///< sizing the balls (all rounds)
   double seconds_initial = 0.0;
   double seconds_refine = 0.0;
