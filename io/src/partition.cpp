@@ -10,6 +10,7 @@
 #include <string>
 
 #include "rdmesh/errors.h"
+#include "tet_faces.h"
 
 namespace rdmesh {
 namespace {
@@ -77,32 +78,12 @@ struct DualGraph {
 };
 
 DualGraph dual_graph(const TetMesh& mesh) {
-  struct Face {
-    std::array<int, 3> v;
-    int tet;
-  };
-  std::vector<Face> faces;
-  faces.reserve(4 * mesh.tets.size());
-  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
-    for (int skip = 0; skip < 4; ++skip) {
-      std::array<int, 3> f{};
-      int k = 0;
-      for (int i = 0; i < 4; ++i) {
-        if (i != skip) f[k++] = mesh.tets[t][i];
-      }
-      std::sort(f.begin(), f.end());
-      faces.push_back({f, static_cast<int>(t)});
-    }
-  }
-  std::sort(faces.begin(), faces.end(),
-            [](const Face& a, const Face& b) { return a.v != b.v ? a.v < b.v : a.tet < b.tet; });
   std::vector<std::array<int, 2>> edges;
-  for (std::size_t i = 0; i + 1 < faces.size(); ++i) {
-    if (faces[i].v == faces[i + 1].v) {
-      edges.push_back({faces[i].tet, faces[i + 1].tet});
-      edges.push_back({faces[i + 1].tet, faces[i].tet});
-    }
-  }
+  io_detail::for_each_shared_face(mesh,
+                                  [&](const io_detail::TetFace& a, const io_detail::TetFace& b) {
+                                    edges.push_back({a.tet, b.tet});
+                                    edges.push_back({b.tet, a.tet});
+                                  });
   std::sort(edges.begin(), edges.end());
   DualGraph g;
   g.xadj.assign(mesh.tets.size() + 1, 0);

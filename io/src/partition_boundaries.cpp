@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "rdmesh/errors.h"
+#include "tet_faces.h"
 
 namespace rdmesh::io_detail {
 namespace {
@@ -198,34 +199,16 @@ PartitionBoundaries partition_boundaries(const TetMesh& mesh) {
   std::vector<std::array<int, 3>> model_faces;
   for (const auto& f : mesh.triangles) model_faces.push_back(sorted(f));
   std::sort(model_faces.begin(), model_faces.end());
-  struct Face {
-    std::array<int, 3> v;
-    int tet, skip;
-    bool operator<(const Face& o) const { return std::tie(v, tet) < std::tie(o.v, o.tet); }
-  };
-  std::vector<Face> faces;
-  faces.reserve(4 * mesh.tets.size());
-  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
-    const auto& tv = mesh.tets[t];
-    for (int skip = 0; skip < 4; ++skip) {
-      const auto& l = kOutwardFaces[skip];
-      faces.push_back(
-          {sorted(std::array<int, 3>{tv[l[0]], tv[l[1]], tv[l[2]]}), static_cast<int>(t), skip});
-    }
-  }
-  std::sort(faces.begin(), faces.end());
   Groups surfaces;
-  for (std::size_t i = 0; i + 1 < faces.size(); ++i) {
-    const Face &a = faces[i], &b = faces[i + 1];
-    if (a.v != b.v) continue;
+  for_each_shared_face(mesh, [&](const TetFace& a, const TetFace& b) {
     const int pa = mesh.tet_partition[a.tet], pb = mesh.tet_partition[b.tet];
-    if (pa == pb || std::binary_search(model_faces.begin(), model_faces.end(), a.v)) continue;
-    const Face& low = pa < pb ? a : b;  // oriented out of the smaller partition
+    if (pa == pb || std::binary_search(model_faces.begin(), model_faces.end(), a.v)) return;
+    const TetFace& low = pa < pb ? a : b;  // oriented out of the smaller partition
     const auto& tv = mesh.tets[low.tet];
     const auto& l = kOutwardFaces[low.skip];
     surfaces[{3, mesh.tet_subdomain[low.tet].value, {std::min(pa, pb), std::max(pa, pb)}}]
         .push_back({tv[l[0]], tv[l[1]], tv[l[2]]});
-  }
+  });
 
   // Edges where partitioned patches and boundary surfaces of different keys meet.
   std::vector<Key> keys;
