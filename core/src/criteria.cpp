@@ -72,7 +72,9 @@ double mean_inverse_power(const ScalarField& f, const Box3& box, int power) {
 }  // namespace
 
 double Criteria::min_size_for(const Box3& box) const {
-  return min_size > 0 ? min_size : 1e-4 * box.diagonal();
+  // The default when min_size is 0, as a fraction of the bounding-box diagonal.
+  constexpr double kDefaultMinSizeFraction = 1e-4;
+  return min_size > 0 ? min_size : kDefaultMinSizeFraction * box.diagonal();
 }
 
 void Criteria::validate() const {

@@ -16,17 +16,23 @@
 
 namespace rdmesh::detail {
 
+namespace {
+/// RefinementStats::guard_features names at most this many pairs of features.
+constexpr std::size_t kGuardFeaturesListed = 20;
+}  // namespace
+
 Refiner::Refiner(const DomainOracle& oracle, const Criteria& criteria, const MeshOptions& options,
                  const ProtectionPlan* plan)
-    : oracle_(oracle), criteria_(criteria), options_(options), plan_(plan) {
-  const Box3 box = oracle_.bounding_box();
-  const double margin = 0.05 * box.diagonal();
-  clip_box_ = {box.lo - Point3{margin, margin, margin}, box.hi + Point3{margin, margin, margin}};
-  const double min_size = criteria_.min_size > 0 ? criteria_.min_size : 1e-4 * box.diagonal();
+    : oracle_(oracle),
+      criteria_(criteria),
+      options_(options),
+      plan_(plan),
+      complex_(oracle, options.surface_only),
+      tr_(complex_.triangulation()),
+      facets_(complex_, criteria_),
+      cells_(complex_, criteria_) {
+  const double min_size = criteria_.min_size_for(oracle_.bounding_box());
   min_size_sq_ = min_size * min_size;
-  const double s = std::sin(criteria_.facet_angle_deg * M_PI / 180.0);
-  facet_shape_bound_ = 4.0 * s * s;
-  cell_shape_bound_sq_ = criteria_.cell_radius_edge * criteria_.cell_radius_edge;
   zone_cells_.reserve(64);
   zone_boundary_.reserve(128);
   new_cells_.reserve(128);
@@ -101,28 +107,12 @@ void Refiner::insert_initial_points() {
     throw OracleError("the oracle's initial points span no volume (" +
                       std::to_string(stats_.initial_points) + " points): cannot start refinement");
   }
-  // Labels spread from cell to neighboring cell (init_cell's `from`); the
-  // first cell of each connected sweep is located from scratch.
-  std::vector<std::pair<Cell_handle, Cell_handle>> sweep;  // (cell, labeled neighbor)
-  for (auto c = tr_.all_cells_begin(); c != tr_.all_cells_end(); ++c) {
-    if (c->info().stamp != 0) continue;
-    sweep.emplace_back(c, Cell_handle());
-    while (!sweep.empty()) {
-      const auto [d, from] = sweep.back();
-      sweep.pop_back();
-      if (d->info().stamp != 0) continue;
-      init_cell(d, from);
-      for (int i = 0; i < 4; ++i) {
-        if (d->neighbor(i)->info().stamp == 0) sweep.emplace_back(d->neighbor(i), d);
-      }
-    }
-  }
+  complex_.init_unstamped_cells();
   for (auto c = tr_.all_cells_begin(); c != tr_.all_cells_end(); ++c) {
     for (int i = 0; i < 4; ++i) {
       if (c->neighbor(i)->info().stamp > c->info().stamp) update_facet(c, i);
     }
-    const double badness = cell_badness(c);
-    if (badness > 0) cell_queue_.push({badness, c, c->info().stamp, -1});
+    cells_.consider(c);
   }
   if (plan_) return;  // the balls are D|L already: no arc is ever refined
   for (std::size_t j = 0; j < curves_.size(); ++j) {
@@ -139,7 +129,7 @@ void Refiner::refine(bool stop_on_conflict) {
     for (auto c = tr_.finite_cells_begin(); c != tr_.finite_cells_end(); ++c) {
       for (int i = 0; i < 4; ++i) {
         if (c->info().facet_patch[i] != 0 && c->neighbor(i)->info().stamp > c->info().stamp) {
-          if (facet_badness(c, i) >= 1e300) ball_conflict(c, i);
+          if (facets_.violation(c, i).rule == Rule::kR3NotFaithful) ball_conflict(c, i);
           overlap_conflict(c, i);
         }
       }
@@ -151,20 +141,18 @@ void Refiner::refine(bool stop_on_conflict) {
       const ArcEntry e = arc_queue_.top();
       arc_queue_.pop();
       const std::optional<CurveState::Arc> a = find_arc(e.arc);
-      // R1 entries (priority 1e300) stay valid while the arc exists.
-      if (!a || (e.priority < 1e300 && arc_badness(e.arc.curve, *a) <= 0)) continue;
+      // R1 entries stay valid while the arc exists.
+      if (!a || (e.rule != Rule::kR1NotRestricted && !arc_violation(e.arc.curve, *a))) continue;
       refine_edge(e.arc.curve, *a);
-    } else if (!facet_queue_.empty()) {
-      const QueueEntry e = facet_queue_.top();
-      facet_queue_.pop();
-      if (stale(e) || facet_badness(e.cell, e.facet) <= 0) continue;
-      refine_facet_or_edge(e.cell, e.facet);
-    } else if (!cell_queue_.empty()) {
+    } else if (!facets_.empty()) {
+      const std::optional<ElementEntry> e = facets_.pop();
+      if (!e) continue;
+      refine_facet_or_edge(e->cell, e->facet);
+    } else if (!cells_.empty()) {
       if (stop_on_conflict && !conflicts_.empty()) break;  // the caller shrinks the balls
-      const QueueEntry e = cell_queue_.top();
-      cell_queue_.pop();
-      if (stale(e) || cell_badness(e.cell) <= 0) continue;
-      refine_tet_facet_or_edge(e);
+      const std::optional<ElementEntry> e = cells_.pop();
+      if (!e) continue;
+      refine_tet_facet_or_edge(*e);
     } else {
       break;
     }
@@ -172,12 +160,12 @@ void Refiner::refine(bool stop_on_conflict) {
     if (deadline_.passed(256)) {
       stats_.time_limit_reached = true;
       stats_.stopped_in = MeshingPhase::refinement;
-      stats_.elements_left = arc_queue_.size() + facet_queue_.size() + cell_queue_.size();
+      stats_.elements_left = arc_queue_.size() + facets_.size() + cells_.size();
       break;
     }
   }
   if (options_.progress) report_progress();
-  if (cell_queue_.empty()) cell_queue_.release();  // its peak size is no longer needed
+  cells_.release_if_empty();
 }
 
 bool Refiner::refine_edge(int curve, CurveState::Arc a) {
@@ -216,7 +204,7 @@ bool Refiner::refine_facet_or_edge(Cell_handle c, int i) {
     // A ball reaching into a patch its feature does not bound: R3 cannot be
     // met there until the ball shrinks. Other facets whose surface ball has no
     // positive radius lie inside the balls: protected, not refined.
-    if (ball_conflict(c, i) || !(facet_power(c, i, center) > 0)) return false;
+    if (ball_conflict(c, i) || !(complex_.facet_power(c, i, center) > 0)) return false;
     // The guard before the conflict zone: the facet's vertices are vertices
     // of every cell in conflict, so one closer than the minimum size refuses
     // the point as insert_in_zone would, without the zone's cost (most of
@@ -244,7 +232,7 @@ bool Refiner::refine_facet_or_edge(Cell_handle c, int i) {
   return true;
 }
 
-bool Refiner::refine_tet_facet_or_edge(const QueueEntry& entry) {
+bool Refiner::refine_tet_facet_or_edge(const ElementEntry& entry) {
   const Cell_handle c = entry.cell;
   const Point3 center = c->info().circumcenter;
   // An orthosphere of non-positive radius lies inside the protecting balls.
@@ -265,7 +253,8 @@ bool Refiner::refine_tet_facet_or_edge(const QueueEntry& entry) {
   }
   if (redirected) {
     ++stats_.encroachments;
-    if (inserted && !stale(entry)) cell_queue_.push(entry);  // the cell may still need refining
+    // The cell may still need refining.
+    if (inserted && complex_.is_live(entry.stamp)) cells_.requeue(entry);
     return inserted;
   }
   if (insert_in_zone(p, VertexInfo{}) == Vertex_handle()) return false;
@@ -281,7 +270,7 @@ bool Refiner::encroached_facet(const Point3& x, Cell_handle& cell, int& facet) c
     for (int i = 0; i < 4; ++i) {
       if (z->info().facet_patch[i] == 0) continue;
       const Point3 sc = z->info().surface_center[i];
-      const double r2 = facet_power(z, i, sc);
+      const double r2 = complex_.facet_power(z, i, sc);
       if (squared_norm(x - sc) < r2 && r2 > best) {
         cell = z;
         facet = i;
@@ -325,7 +314,7 @@ Vertex_handle Refiner::insert_in_zone(const Weighted_point& p, const VertexInfo&
       }
     }
   }
-  for (const Cell_handle& z : zone_cells_) kill(z->info());  // entries become stale
+  for (const Cell_handle& z : zone_cells_) complex_.kill(z->info());  // entries become stale
   const Triangulation::Facet& f = zone_boundary_.front();
   const Vertex_handle v =
       tr_.insert_in_hole(p, zone_cells_.begin(), zone_cells_.end(), f.first, f.second);
@@ -338,10 +327,10 @@ Vertex_handle Refiner::insert_in_zone(const Weighted_point& p, const VertexInfo&
 void Refiner::after_insertion(Vertex_handle v) {
   new_cells_.clear();
   tr_.incident_cells(v, std::back_inserter(new_cells_));
-  const std::uint32_t first_new = next_stamp_;
+  const std::uint32_t first_new = complex_.next_stamp();
   // Each new cell's facet opposite v bounds the conflict zone: the cell
   // across it is old, hence labeled.
-  for (const Cell_handle& c : new_cells_) init_cell(c, c->neighbor(c->index(v)));
+  for (const Cell_handle& c : new_cells_) complex_.init_cell(c, c->neighbor(c->index(v)));
   for (const Cell_handle& c : new_cells_) {
     for (int i = 0; i < 4; ++i) {
       // Facets between two new cells are visited once, from the older stamp.
@@ -349,10 +338,11 @@ void Refiner::after_insertion(Vertex_handle v) {
       if (ns < first_new || ns > c->info().stamp) update_facet(c, i);
     }
   }
-  for (const Cell_handle& c : new_cells_) {
-    const double badness = cell_badness(c);
-    if (badness > 0) cell_queue_.push({badness, c, c->info().stamp, -1});
-  }
+  for (const Cell_handle& c : new_cells_) cells_.consider(c);
+}
+
+void Refiner::update_facet(Cell_handle c, int i) {
+  if (complex_.update_facet(c, i)) facets_.consider(c, i);
 }
 
 std::string Refiner::describe(const VertexInfo& v) const {
@@ -371,7 +361,7 @@ std::string Refiner::describe(const VertexInfo& v) const {
 
 void Refiner::record_guard(const VertexInfo& candidate, const VertexInfo& nearest) {
   ++stats_.guard_rejections;
-  if (stats_.guard_features.size() >= 20) return;
+  if (stats_.guard_features.size() >= kGuardFeaturesListed) return;
   const std::string what = describe(candidate) + " near " + describe(nearest);
   auto& list = stats_.guard_features;
   if (std::find(list.begin(), list.end(), what) == list.end()) list.push_back(what);
@@ -382,11 +372,92 @@ void Refiner::report_progress() {
   Progress p;
   p.vertices = tr_.number_of_vertices();
   p.edge_queue = arc_queue_.size();
-  p.facet_queue = facet_queue_.size();
-  p.cell_queue = cell_queue_.size();
+  p.facet_queue = facets_.size();
+  p.cell_queue = cells_.size();
   p.elapsed_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time_).count();
   options_.progress(p);
+}
+
+bool Refiner::ball_conflict(Cell_handle c, int i) {
+  const int patch = c->info().facet_patch[i];
+  const Point3 center = c->info().surface_center[i];
+  for (int k = 1; k < 4; ++k) {
+    const Vertex_handle v = c->vertex((i + k) & 3);
+    const double w = v->point().weight();
+    if (w == 0 || complex_.on_patch(v->info(), patch)) continue;
+    // The surface center is on the sphere of the facet's orthoball, so it lies
+    // near or in this ball only when the ball reaches the patch (an early,
+    // coarse facet far from the ball is refined as usual).
+    if (squared_norm(center - to_point3(v->point())) > 1.5 * w) continue;
+    add_conflict(ball_of(v->info()));
+    return true;
+  }
+  return false;
+}
+
+BallRef Refiner::ball_of(const VertexInfo& info) const {
+  BallRef ref;
+  if (info.dim == FeatureDim::kCorner) {
+    ref.corner = info.feature - 1;
+  } else {
+    const std::vector<BallSample>& s = plan_->curves[info.feature - 1].samples;
+    const auto it = std::lower_bound(s.begin(), s.end(), info.t,
+                                     [](const BallSample& b, double t) { return b.t < t; });
+    ref.curve = info.feature - 1;
+    ref.index = static_cast<int>(it - s.begin());
+  }
+  return ref;
+}
+
+void Refiner::add_conflict(const BallRef& ref) {
+  for (BallRef& b : conflicts_) {
+    if (b.curve == ref.curve && b.index == ref.index && b.corner == ref.corner) {
+      b.factor = std::min(b.factor, ref.factor);
+      return;
+    }
+  }
+  conflicts_.push_back(ref);
+}
+
+void Refiner::overlap_conflict(Cell_handle c, int i) {
+  auto info_of = [&](int j) -> const CurveInfo& { return curves_[j].info; };
+  // The overlapping pairs of unrelated balls among the facet's vertices.
+  std::array<BallRef, 6> pairs;
+  int n = 0;
+  for (int x = 1; x < 4; ++x) {
+    const Vertex_handle a = c->vertex((i + x) & 3);
+    const double wa = a->point().weight();
+    if (wa == 0) continue;
+    const BallRef ball_a = ball_of(a->info());
+    for (int y = x + 1; y < 4; ++y) {
+      const Vertex_handle b = c->vertex((i + y) & 3);
+      const double wb = b->point().weight();
+      if (wb == 0) continue;
+      const BallRef ball_b = ball_of(b->info());
+      if (related_balls(ball_a, ball_b, info_of)) continue;
+      const double ra = std::sqrt(wa), rb = std::sqrt(wb);
+      const double need = ProtectionPlanner::disjoint_distance(ra, rb);
+      const double dist = distance(to_point3(a->point()), to_point3(b->point()));
+      if (dist >= need) continue;
+      // Down to disjoint at once (B2 for related balls), rather than by halves.
+      pairs[n] = ball_a, pairs[n + 1] = ball_b;
+      pairs[n].factor = pairs[n + 1].factor = std::min(0.5, 0.95 * dist / need);
+      n += 2;
+    }
+  }
+  if (n == 0) return;
+  // The surface within the facet distance of the centroid, along the normal.
+  const Point3 p[3] = {to_point3(c->vertex((i + 1) & 3)->point()),
+                       to_point3(c->vertex((i + 2) & 3)->point()),
+                       to_point3(c->vertex((i + 3) & 3)->point())};
+  const Point3 normal = cross(p[1] - p[0], p[2] - p[0]);
+  const double len = norm(normal);
+  if (!(len > 0)) return;
+  const Point3 g = (1.0 / 3) * (p[0] + p[1] + p[2]);
+  const Point3 reach = (1.5 * criteria_.facet_distance(g) / len) * normal;
+  if (oracle_.intersect(g - reach, g + reach)) return;
+  for (int k = 0; k < n; ++k) add_conflict(pairs[k]);
 }
 
 }  // namespace rdmesh::detail

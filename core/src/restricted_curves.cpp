@@ -22,6 +22,7 @@
 namespace rdmesh::detail {
 
 void Refiner::load_curves() {
+  std::vector<std::vector<int>> corner_patches, curve_patches;  // for R3, by id - 1
   corners_ = oracle_.corners();
   for (std::size_t i = 0; i < corners_.size(); ++i) {
     if (corners_[i].id.value != static_cast<int>(i) + 1) {
@@ -29,7 +30,7 @@ void Refiner::load_curves() {
     }
     std::vector<int> patches;
     for (const PatchId& p : corners_[i].patches) patches.push_back(p.value);
-    corner_patches_.push_back(std::move(patches));
+    corner_patches.push_back(std::move(patches));
   }
   for (const CurveInfo& info : oracle_.curves()) {
     if (info.id.value != static_cast<int>(curves_.size()) + 1) {
@@ -41,8 +42,9 @@ void Refiner::load_curves() {
     curves_.push_back(std::move(state));
     std::vector<int> patches;
     for (const PatchId& p : info.patches) patches.push_back(p.value);
-    curve_patches_.push_back(std::move(patches));
+    curve_patches.push_back(std::move(patches));
   }
+  complex_.set_feature_patches(std::move(corner_patches), std::move(curve_patches));
 }
 
 void Refiner::insert_corners_and_curve_samples() {
@@ -217,36 +219,39 @@ void Refiner::create_arc(int curve, CurveState::Arc a, bool check_empty) {
   s.t_center = best_t;
   s.center = c.curve->point(best_t);
   s.squared_radius = std::max(squared_norm(s.center - p), squared_norm(s.center - q));
-  double badness = arc_badness(curve, a);
-  if (check_empty && badness < 1e300) {
+  Violation violation = arc_violation(curve, a);
+  if (check_empty) {
     // R1: is the ball empty? Its nearest vertex must be p or q.
     const Vertex_handle w = tr_.nearest_power_vertex(
         Kernel::Point_3(s.center.x, s.center.y, s.center.z), a->second.vertex->cell());
     if (w != a->second.vertex && w != b->second.vertex &&
         squared_norm(to_point3(w->point()) - s.center) < s.squared_radius) {
-      badness = 1e300;
+      violation = Violation::topological(Rule::kR1NotRestricted);
     }
   }
-  if (badness > 0) push_arc(curve, a, badness);
+  if (violation) push_arc(curve, a, violation);
 }
 
-double Refiner::arc_badness(int curve, CurveState::Arc a) const {
+Violation Refiner::arc_violation(int curve, CurveState::Arc a) const {
   const CurveSample& s = a->second;
   const Point3 p = to_point3(s.vertex->point());
   const Point3 q = to_point3(std::next(a)->second.vertex->point());
-  double badness = 0;
+  Violation worst;
   const double sigma = criteria_.edge_size(s.center);
-  if (s.squared_radius > sigma * sigma) badness = s.squared_radius / (sigma * sigma);
+  if (s.squared_radius > sigma * sigma) {
+    worst.worsen(Rule::kR2Size, s.squared_radius / (sigma * sigma));
+  }
   const double d2 = squared_distance_to_segment(s.center, p, q);
   const double dmax = criteria_.facet_distance(s.center), dmax2 = dmax * dmax;
-  if (d2 > dmax2) badness = std::max(badness, d2 / dmax2);
+  if (d2 > dmax2) worst.worsen(Rule::kR2Distance, d2 / dmax2);
   (void)curve;
-  return badness;
+  return worst;
 }
 
-void Refiner::push_arc(int curve, CurveState::Arc a, double badness) {
-  arc_queue_.push({badness, next_arc_order_++,
-                   ArcRef{curve, a->first, a->second.vertex, std::next(a)->second.vertex}});
+void Refiner::push_arc(int curve, CurveState::Arc a, const Violation& violation) {
+  arc_queue_.push({violation.priority, next_arc_order_++,
+                   ArcRef{curve, a->first, a->second.vertex, std::next(a)->second.vertex},
+                   violation.rule});
 }
 
 std::optional<CurveState::Arc> Refiner::find_arc(const ArcRef& ref) {
@@ -303,7 +308,9 @@ void Refiner::recheck_arcs_after(Vertex_handle v) {
     for (const auto& [curve, arc] : arcs_scratch_) {
       const CurveSample& s = arc->second;
       if (arc->second.vertex == v || std::next(arc)->second.vertex == v) continue;
-      if (squared_norm(x - s.center) < s.squared_radius) push_arc(curve, arc, 1e300);  // R1
+      if (squared_norm(x - s.center) < s.squared_radius) {
+        push_arc(curve, arc, Violation::topological(Rule::kR1NotRestricted));
+      }
     }
   }
 }

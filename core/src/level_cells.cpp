@@ -1,0 +1,43 @@
+// The cell level: rule R5 on the cells of D|O (RR-7912 section 3).
+#include "level_cells.h"
+
+#include "simplex_geometry.h"
+
+namespace rdmesh::detail {
+
+CellLevel::CellLevel(const RestrictedComplex& complex, const Criteria& criteria)
+    : complex_(complex),
+      criteria_(criteria),
+      shape_bound_sq_(criteria.cell_radius_edge * criteria.cell_radius_edge) {}
+
+Violation CellLevel::violation(Cell_handle c) const {
+  const CellInfo& info = c->info();
+  if (info.label == kOutside.value || complex_.triangulation().is_infinite(c)) return {};
+  Violation worst;
+  // R5.1: Delaunay ball radius against the sizing field.
+  const double sigma = criteria_.cell_size(info.circumcenter);
+  if (info.squared_radius > sigma * sigma) {
+    worst.worsen(Rule::kR5Size, info.squared_radius / (sigma * sigma));
+  }
+  // R5.2: radius-edge ratio <= beta_3.
+  const double e2 =
+      min_squared_edge(to_point3(c->vertex(0)->point()), to_point3(c->vertex(1)->point()),
+                       to_point3(c->vertex(2)->point()), to_point3(c->vertex(3)->point()));
+  const double limit = shape_bound_sq_ * e2;
+  if (info.squared_radius > limit) worst.worsen(Rule::kR5Shape, info.squared_radius / limit);
+  return worst;
+}
+
+void CellLevel::consider(Cell_handle c) {
+  const Violation v = violation(c);
+  if (v) queue_.push({v.priority, c, c->info().stamp, -1});
+}
+
+std::optional<ElementEntry> CellLevel::pop() {
+  const ElementEntry e = queue_.top();
+  queue_.pop();
+  if (!complex_.is_live(e.stamp) || !violation(e.cell)) return std::nullopt;
+  return e;
+}
+
+}  // namespace rdmesh::detail

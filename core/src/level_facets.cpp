@@ -1,0 +1,70 @@
+// The facet level: rules R3 and R4 on the facets of D|S (RR-7912 section 3).
+#include "level_facets.h"
+
+#include <cmath>
+
+#include "simplex_geometry.h"
+
+namespace rdmesh::detail {
+
+FacetLevel::FacetLevel(const RestrictedComplex& complex, const Criteria& criteria)
+    : complex_(complex), criteria_(criteria) {
+  const double s = std::sin(criteria_.facet_angle_deg * M_PI / 180.0);
+  shape_bound_ = 4.0 * s * s;
+}
+
+Violation FacetLevel::violation(Cell_handle c, int i) const {
+  const int patch = c->info().facet_patch[i];
+  if (patch == 0) return {};
+  const Vertex_handle v[3] = {c->vertex((i + 1) & 3), c->vertex((i + 2) & 3),
+                              c->vertex((i + 3) & 3)};
+  // R3: every vertex of a facet of D|S_k must lie on S_k (or on its boundary curves).
+  for (const Vertex_handle& vh : v) {
+    if (!complex_.on_patch(vh->info(), patch)) return Violation::topological(Rule::kR3NotFaithful);
+  }
+  const Point3 p[3] = {to_point3(v[0]->point()), to_point3(v[1]->point()),
+                       to_point3(v[2]->point())};
+  const Point3 center = c->info().surface_center[i];
+  Violation worst;
+  // R4.1: surface Delaunay ball radius against the sizing field.
+  const double r2 = complex_.facet_power(c, i, center);
+  const double sigma = criteria_.facet_size(center);
+  if (r2 > sigma * sigma) worst.worsen(Rule::kR4Size, r2 / (sigma * sigma));
+  // R4.2: shape, as a minimum angle: min edge^2 >= 4 sin^2(angle) R^2, with R
+  // the triangle's circumradius. Next to a protecting ball (a weighted vertex)
+  // R is the surface ball's radius instead, as in the paper's R4.2: its center,
+  // the refinement point, is then at least R from every unweighted vertex, so
+  // refining a bad facet never inserts a point closer than its shortest edge.
+  const double w[3] = {v[0]->point().weight(), v[1]->point().weight(), v[2]->point().weight()};
+  const bool weighted = w[0] != 0 || w[1] != 0 || w[2] != 0;
+  const Point3 tc = triangle_circumcenter(p[0], p[1], p[2]);
+  const double shape_r2 = weighted ? r2 : squared_norm(p[0] - tc);
+  const double e2 = min_squared_edge(p[0], p[1], p[2]);
+  if (!(e2 >= shape_bound_ * shape_r2)) {
+    worst.worsen(Rule::kR4Shape, e2 > 0 ? shape_bound_ * shape_r2 / e2 : kDegenerateRatio);
+  }
+  // Approximation: the ball center on the patch is close to the facet's plane
+  // (its distance to the facet's orthocenter, the foot of the dual edge; the
+  // circumcenter when no vertex is weighted).
+  const Point3 oc = weighted ? triangle_orthocenter(p[0], w[0], p[1], w[1], p[2], w[2]) : tc;
+  const double d2 = squared_norm(oc - center);
+  const double dmax = criteria_.facet_distance(center), dmax2 = dmax * dmax;
+  if (!(d2 <= dmax2)) {
+    worst.worsen(Rule::kR4Distance, std::isfinite(d2) ? d2 / dmax2 : kDegenerateRatio);
+  }
+  return worst;
+}
+
+void FacetLevel::consider(Cell_handle c, int i) {
+  const Violation v = violation(c, i);
+  if (v) queue_.push({v.priority, c, c->info().stamp, i});
+}
+
+std::optional<ElementEntry> FacetLevel::pop() {
+  const ElementEntry e = queue_.top();
+  queue_.pop();
+  if (!complex_.is_live(e.stamp) || !violation(e.cell, e.facet)) return std::nullopt;
+  return e;
+}
+
+}  // namespace rdmesh::detail

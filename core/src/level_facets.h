@@ -1,0 +1,46 @@
+// Private to core/: the facet level of RR-7912 section 3, rules R3 and R4 on
+// the facets of D|S (level_facets.cpp).
+//   R3    a vertex of a facet of D|S_k does not lie on S_k (or on a curve or
+//         corner bounding it): the surface is not yet faithfully sampled;
+//   R4.1  the surface Delaunay ball is larger than the facet size;
+//   R4.2  the facet's smallest angle is below facet_angle_deg;
+//   and the approximation bound (as CGAL Mesh_3): the facet lies within
+//   facet_distance of its ball's centre.
+// refine-facet-or-edge inserts the ball's centre (refiner.cpp).
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <queue>
+
+#include "element_entry.h"
+#include "rdmesh/criteria.h"
+#include "restricted_complex.h"
+#include "violation.h"
+
+namespace rdmesh::detail {
+
+class FacetLevel {
+ public:
+  /// Both must outlive the level.
+  FacetLevel(const RestrictedComplex& complex, const Criteria& criteria);
+
+  /// The worst rule facet (c, i) violates; Rule::kNone for a facet not in D|S.
+  Violation violation(Cell_handle c, int i) const;
+  /// Queues facet (c, i) when it violates a rule.
+  void consider(Cell_handle c, int i);
+
+  bool empty() const { return queue_.empty(); }
+  std::size_t size() const { return queue_.size(); }
+  /// Pops the worst entry: the facet, if it still exists and still violates a
+  /// rule; else nullopt (the entry was stale).
+  std::optional<ElementEntry> pop();
+
+ private:
+  const RestrictedComplex& complex_;
+  const Criteria& criteria_;
+  double shape_bound_;  ///< 4 sin^2(facet angle): min edge^2 / R^2 below it is bad
+  std::priority_queue<ElementEntry> queue_;
+};
+
+}  // namespace rdmesh::detail
