@@ -5,19 +5,19 @@ include(CMakePackageConfigHelpers)
 
 # rdmesh::rdmesh: everything but CAD (the target "rdmesh" is the command).
 add_library(rdmesh_library INTERFACE)
-target_link_libraries(rdmesh_library INTERFACE rdmesh_io rdmesh_view rdmesh_core rdmesh_oracles)
+target_link_libraries(rdmesh_library INTERFACE rdmesh_io rdmesh_view rdmesh_core rdmesh_oracles rdmesh_base)
 set_target_properties(rdmesh_library PROPERTIES EXPORT_NAME rdmesh)
 set_target_properties(rdmesh_cad PROPERTIES EXPORT_NAME cad)
-foreach(layer oracles core view io)
+foreach(layer base oracles core view io)
   set_target_properties(rdmesh_${layer} PROPERTIES EXPORT_NAME ${layer})
 endforeach()
 
-install(TARGETS rdmesh_library rdmesh_io rdmesh_view rdmesh_core rdmesh_oracles rdmesh_cad
+install(TARGETS rdmesh_library rdmesh_io rdmesh_view rdmesh_core rdmesh_oracles rdmesh_base rdmesh_cad
         EXPORT rdmeshTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(TARGETS rdmesh RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-foreach(layer oracles core view io cad)
+foreach(layer base oracles core view io cad)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${layer}/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 endforeach()
 

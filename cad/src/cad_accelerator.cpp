@@ -93,7 +93,7 @@ void build_accelerator(CadOracle::Model& m, const PrepDeadline& deadline) {
     for (int t = f.first_triangle; t < f.end_triangle; ++t) {
       own.push_back(triangle_box(m.triangles[t], 0));
     }
-    f.triangle_tree = TriangleBvh(own);
+    f.triangle_tree = BoxTree(own);
     if (f.first_triangle == f.end_triangle) ++untessellated;
     // Triangle boxes for every tessellated face, analytic ones included: a
     // face's box holds much empty space (holes, the inside of a curved face),
@@ -113,7 +113,7 @@ void build_accelerator(CadOracle::Model& m, const PrepDeadline& deadline) {
       f.boundary.clear();  // project() then falls back on BRepExtrema near the boundary
     }
   }
-  m.candidate_tree = TriangleBvh(boxes);
+  m.candidate_tree = BoxTree(boxes);
   m.occupied = OccupancyGrid(m.box, boxes);
   if (untessellated > 0) {
     m.log.push_back(std::to_string(untessellated) +

@@ -22,8 +22,8 @@
 
 #include "face_tessellation.h"
 #include "occupancy_grid.h"
+#include "rdmesh/box_tree.h"
 #include "rdmesh/cad_oracle.h"
-#include "rdmesh/detail/triangle_bvh.h"
 #include "rdmesh/errors.h"
 
 class StepData_StepModel;
@@ -152,7 +152,7 @@ struct FacePatch {
   /// This face's triangles are Model::triangles[first_triangle, end_triangle).
   int first_triangle = 0, end_triangle = 0;
   /// Over this face's triangles (indices relative to first_triangle), for project().
-  TriangleBvh triangle_tree;
+  BoxTree triangle_tree;
   std::vector<BoundaryCurve> boundary;
   /// The face's normal (surface normal, flipped for a reversed face) points out
   /// of subdomain `outward_of` into subdomain `inward_of` (either may be 0).
@@ -193,7 +193,7 @@ struct CadOracle::Model {
   /// an analytic face is intersected in closed form once per query, whichever
   /// of its triangles is met first), and an untessellated face as a whole.
   std::vector<cad::Candidate> candidates;
-  TriangleBvh candidate_tree;
+  BoxTree candidate_tree;
   cad::OccupancyGrid occupied;  ///< the grid cells the candidates' boxes meet
   std::vector<PatchInfo> patches;
   /// The file's face names and colours, carried to the faces after the fuse.

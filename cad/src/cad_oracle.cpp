@@ -15,7 +15,7 @@
 #include "face_intersector.h"
 #include "face_projection.h"
 #include "isolated_read.h"
-#include "rdmesh/detail/triangle_bvh.h"
+#include "rdmesh/box_tree.h"
 #include "thread_state.h"
 
 namespace rdmesh {

@@ -9,9 +9,9 @@
 #include <utility>
 #include <vector>
 
+#include "rdmesh/box_tree.h"
 #include "rdmesh/criteria.h"
 #include "rdmesh/curvature_sizes.h"
-#include "rdmesh/detail/triangle_bvh.h"
 #include "rdmesh/geometry.h"
 #include "rdmesh/oracle.h"
 #include "rdmesh/tet_mesh.h"
@@ -36,7 +36,7 @@ class GradedSize {
 
  private:
   Pieces pieces_;
-  TriangleBvh bvh_;
+  BoxTree bvh_;
   double size_, slope_;
 };
 

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "rdmesh/detail/triangle_bvh.h"
+#include "rdmesh/box_tree.h"
 #include "rdmesh/errors.h"
 
 namespace rdmesh {
@@ -101,7 +101,7 @@ void validate_soup(const TriangleSoup& soup, const std::string& file) {
 }
 
 void check_self_intersections(const TriangleSoup& soup, const std::string& file) {
-  const TriangleBvh bvh(soup.points, soup.triangles);
+  const BoxTree bvh(soup.points, soup.triangles);
   const int n = static_cast<int>(soup.triangles.size());
   for (int t = 0; t < n; ++t) {
     const auto& tri = soup.triangles[t];

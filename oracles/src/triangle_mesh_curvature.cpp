@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "rdmesh/detail/triangle_bvh.h"
+#include "rdmesh/box_tree.h"
 #include "rdmesh/triangle_mesh_oracle.h"
 
 namespace rdmesh {

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <numeric>
 
-#include "rdmesh/detail/triangle_bvh.h"
+#include "rdmesh/box_tree.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/number_text.h"
 #include "rdmesh/triangle_mesh_check.h"
@@ -39,7 +39,7 @@ TriangleMeshOracle::TriangleMeshOracle(TriangleSoup soup, const std::string& fil
   const Point3 margin{0.01 * diag, 0.01 * diag, 0.01 * diag};
   box_ = {mesh_box_.lo - margin, mesh_box_.hi + margin};
   tolerance_ = 1e-10 * diag;
-  bvh_ = std::make_unique<TriangleBvh>(mesh_.points, mesh_.triangles);
+  bvh_ = std::make_unique<BoxTree>(mesh_.points, mesh_.triangles);
   triangle_component_ = topo.component;
   if (options_.surface_only) {
     component_parent_.assign(topo.component_count, -1);  // no subdomain, no nesting

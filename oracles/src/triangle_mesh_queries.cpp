@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstring>
 
-#include "rdmesh/detail/triangle_bvh.h"
+#include "rdmesh/box_tree.h"
 #include "rdmesh/triangle_mesh_oracle.h"
 
 namespace rdmesh {

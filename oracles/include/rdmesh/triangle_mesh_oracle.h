@@ -41,7 +41,7 @@
 
 namespace rdmesh {
 
-class TriangleBvh;
+class BoxTree;
 
 /// Options of TriangleMeshOracle.
 struct TriangleMeshOptions {
@@ -142,7 +142,7 @@ class TriangleMeshOracle final : public DomainOracle {
   Box3 mesh_box_;  // the mesh's own bounding box
   double tolerance_ = 0;
   double volume_ = 0;
-  std::unique_ptr<TriangleBvh> bvh_;
+  std::unique_ptr<BoxTree> bvh_;
   std::vector<int> triangle_component_;
   std::vector<PatchId> triangle_patch_;
   std::vector<int> component_parent_;  // enclosing component, -1 for none

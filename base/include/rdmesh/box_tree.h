@@ -1,6 +1,6 @@
-// A bounding-volume hierarchy over triangles (or any items given by their boxes),
-// shared by the oracle implementations (triangle meshes, CAD tessellations);
-// not part of the oracle interface.
+// A bounding-volume hierarchy over items given by their boxes (triangles of a
+// point set, or any boxes), shared by the triangle-mesh and CAD oracles and by
+// core's graded size field; not part of the oracle interface.
 //
 // Nodes are stored depth-first in one array; a leaf holds up to kLeafSize
 // consecutive entries of `order()` (item indices). Built once by splits along
@@ -16,7 +16,7 @@
 
 namespace rdmesh {
 
-class TriangleBvh {
+class BoxTree {
  public:
   struct Node {
     Box3 box;
@@ -26,12 +26,12 @@ class TriangleBvh {
   static constexpr int kLeafSize = 4;
   static constexpr int kMaxDepth = 64;
 
-  TriangleBvh() = default;
+  BoxTree() = default;
   /// Over triangles of `points`, each bounded by its own box.
-  TriangleBvh(const std::vector<Point3>& points, const std::vector<std::array<int, 3>>& triangles);
+  BoxTree(const std::vector<Point3>& points, const std::vector<std::array<int, 3>>& triangles);
   /// Over items given by their boxes (item i has box boxes[i], e.g. a triangle's box
   /// inflated by how far the surface it stands for may deviate from it).
-  explicit TriangleBvh(const std::vector<Box3>& boxes);
+  explicit BoxTree(const std::vector<Box3>& boxes);
 
   const std::vector<Node>& nodes() const { return nodes_; }
   const std::vector<int>& order() const { return order_; }

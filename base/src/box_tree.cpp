@@ -1,5 +1,5 @@
-// The BVH of rdmesh/detail/triangle_bvh.h: construction and its small geometric helpers.
-#include "rdmesh/detail/triangle_bvh.h"
+// The BVH of rdmesh/box_tree.h: construction and its small geometric helpers.
+#include "rdmesh/box_tree.h"
 
 #include <algorithm>
 #include <cmath>
@@ -26,8 +26,8 @@ double half_area(const Box3& b) {
 
 }  // namespace
 
-TriangleBvh::TriangleBvh(const std::vector<Point3>& points,
-                         const std::vector<std::array<int, 3>>& triangles) {
+BoxTree::BoxTree(const std::vector<Point3>& points,
+                 const std::vector<std::array<int, 3>>& triangles) {
   const int n = static_cast<int>(triangles.size());
   if (n == 0) return;
   std::vector<Box3> boxes(n);
@@ -41,13 +41,13 @@ TriangleBvh::TriangleBvh(const std::vector<Point3>& points,
   build_all(boxes, centroids);
 }
 
-TriangleBvh::TriangleBvh(const std::vector<Box3>& boxes) {
+BoxTree::BoxTree(const std::vector<Box3>& boxes) {
   std::vector<Point3> centres(boxes.size());
   for (std::size_t i = 0; i < boxes.size(); ++i) centres[i] = boxes[i].center();
   build_all(boxes, centres);
 }
 
-void TriangleBvh::build_all(const std::vector<Box3>& boxes, const std::vector<Point3>& centres) {
+void BoxTree::build_all(const std::vector<Box3>& boxes, const std::vector<Point3>& centres) {
   const int n = static_cast<int>(boxes.size());
   if (n == 0) return;
   order_.resize(n);
@@ -56,8 +56,8 @@ void TriangleBvh::build_all(const std::vector<Box3>& boxes, const std::vector<Po
   build(0, n, 0, boxes, centres);
 }
 
-int TriangleBvh::build(int begin, int end, int depth, const std::vector<Box3>& boxes,
-                       const std::vector<Point3>& centroids) {
+int BoxTree::build(int begin, int end, int depth, const std::vector<Box3>& boxes,
+                   const std::vector<Point3>& centroids) {
   const int index = static_cast<int>(nodes_.size());
   nodes_.push_back({});
   Box3 box = empty_box(), cbox = empty_box();
@@ -82,8 +82,8 @@ int TriangleBvh::build(int begin, int end, int depth, const std::vector<Box3>& b
   return index;
 }
 
-int TriangleBvh::sah_split(int begin, int end, int k, double lo, double width,
-                           const std::vector<Box3>& boxes, const std::vector<Point3>& centroids) {
+int BoxTree::sah_split(int begin, int end, int k, double lo, double width,
+                       const std::vector<Box3>& boxes, const std::vector<Point3>& centroids) {
   // Binned surface area heuristic along axis k: the cut between bins that
   // minimizes area(left) * count(left) + area(right) * count(right), so that a
   // query's segment enters few boxes; the median when the centres coincide.
