@@ -2,7 +2,6 @@
 // Every failure is one line "rdmesh: error: ..." on stderr and a non-zero exit
 // (2 for bad input or an unwritable output); no partial output file is left.
 #include <CLI/CLI.hpp>
-#include <chrono>
 #include <cstdio>
 #include <iostream>
 #include <optional>
@@ -17,6 +16,7 @@
 #include "rdmesh/mesher.h"
 #include "rdmesh/quality_report.h"
 #include "rdmesh/run_setup.h"
+#include "rdmesh/stopwatch.h"
 #include "view_command.h"
 
 namespace {
@@ -28,7 +28,7 @@ int fail(int code, const std::string& message) {
 
 int mesh_command(const rdmesh::run::Options& opt) {
   using namespace rdmesh;
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch clock;
   run::check_paths(opt);
   run::check_outputs(opt);
 
@@ -39,8 +39,7 @@ int mesh_command(const rdmesh::run::Options& opt) {
   Criteria criteria = run::resolve_criteria(opt, input);
   const run::AppliedSizes sizes =
       run::apply_size_options(opt.fem, input.hints.sizes, *input.oracle, criteria);
-  const double seconds_load =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds_load = clock.seconds();
 
   MeshOptions mesh_options;
   mesh_options.progress = [&progress](const Progress& p) { progress(p); };

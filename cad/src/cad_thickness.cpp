@@ -16,13 +16,13 @@
 #include <GeomAPI_ProjectPointOnSurf.hxx>
 #include <Standard_Failure.hxx>
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <string>
 
 #include "cad_model.h"
 #include "rdmesh/errors.h"
+#include "rdmesh/stopwatch.h"
 
 namespace rdmesh {
 namespace {
@@ -71,10 +71,10 @@ std::optional<double> CadOracle::curved_thickness(PatchId id) const {
   // A few rays take microseconds on a valid face; on a surface a corrupt
   // control point sent far from its edges (a fuzzed STEP file) each took
   // OpenCASCADE's slow intersection path, for minutes in all.
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch clock;
   try {
     for (const Point3& s : m.seeds[static_cast<std::size_t>(id.value) - 1]) {
-      if (std::chrono::steady_clock::now() - start > std::chrono::seconds(kThicknessSeconds)) {
+      if (clock.seconds() > kThicknessSeconds) {
         throw InputError("face " + std::to_string(id.value) +
                          ": measuring the material behind it took over " +
                          std::to_string(kThicknessSeconds) + " s (a malformed surface?)");

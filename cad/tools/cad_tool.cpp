@@ -7,7 +7,6 @@
 //   rdmesh_cad_tool curves FILE         each curve's length, corners and ends
 //   rdmesh_cad_tool write SHAPE FILE    writes a test shape (box, cylinder, box_minus_cylinder,
 //                                       two_boxes, sphere) as STEP / BREP / IGES
-#include <chrono>
 #include <cstdio>
 #include <iostream>
 #include <map>
@@ -16,6 +15,7 @@
 #include "rdmesh/cad_oracle.h"
 #include "rdmesh/curve.h"
 #include "rdmesh/errors.h"
+#include "rdmesh/stopwatch.h"
 
 int main(int argc, char** argv) {
   using namespace rdmesh;
@@ -49,10 +49,9 @@ int main(int argc, char** argv) {
       // sew, check and build the oracle.
       CadOptions options;
       options.isolate = std::string(argv[2]) == "isolated";
-      const auto t = std::chrono::steady_clock::now();
+      const Stopwatch clock;
       const auto o = load_cad_file(argv[3], options);
-      std::printf("%.6f\n",
-                  std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count());
+      std::printf("%.6f\n", clock.seconds());
       return o->patches().empty() ? 1 : 0;
     }
     if (cmd == "faces" && argc == 3) {

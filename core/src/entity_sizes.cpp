@@ -4,7 +4,6 @@
 #include "rdmesh/entity_sizes.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -15,6 +14,7 @@
 #include "rdmesh/curvature_sizes.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/mesher.h"
+#include "rdmesh/stopwatch.h"
 
 namespace rdmesh {
 namespace {
@@ -172,7 +172,7 @@ SizesApplied apply_sizes(const DomainOracle& oracle, const SizeRequests& request
     throw InputError("--curvature must be a positive number of elements per turn");
   }
   if (sizes.empty() && requests.curvature == 0) return out;
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch clock;
   const double grade = requests.grade;
   if (!(grade > 1) || !std::isfinite(grade)) {
     throw InputError("--grade must be a number above 1");
@@ -222,7 +222,7 @@ SizesApplied apply_sizes(const DomainOracle& oracle, const SizeRequests& request
   criteria.edge_size = detail::lowered(criteria.edge_size, near, nullptr, &oracle);
   criteria.facet_size = detail::lowered(criteria.facet_size, near, nullptr, &oracle);
   criteria.cell_size = detail::lowered(criteria.cell_size, near, inside, &oracle);
-  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  out.seconds = clock.seconds();
   return out;
 }
 

@@ -11,15 +11,12 @@
 #include "optimize/sliver_exuder.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/number_text.h"
+#include "rdmesh/stopwatch.h"
 #include "rdmesh/tet_improvement.h"
 #include "refiner.h"
 
 namespace rdmesh {
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
 
 /// An empty mesh is an input error (criteria too coarse for the domain, like
 /// those check_feasible refuses), a patch without triangles a warning in the stats.
@@ -111,15 +108,15 @@ MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& given,
     throw InputError("the number of threads must be >= 0 (0: all cores), got " +
                      std::to_string(options.threads));
   }
-  const auto run_start = std::chrono::steady_clock::now();
+  const Stopwatch run_clock;
   const auto deadline =
       options.time_limit_seconds > 0
-          ? run_start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                            std::chrono::duration<double>(options.time_limit_seconds))
-          : std::chrono::steady_clock::time_point::max();
+          ? Stopwatch::Clock::now() + std::chrono::duration_cast<Stopwatch::Clock::duration>(
+                                          std::chrono::duration<double>(options.time_limit_seconds))
+          : Stopwatch::Clock::time_point::max();
   const bool protect = options.features == FeatureMethod::kProtectingBalls &&
                        !(oracle.curves().empty() && oracle.corners().empty());
-  auto t = std::chrono::steady_clock::now();
+  Stopwatch phase;
   std::optional<detail::ProtectionPlanner> planner;
   detail::ProtectionPlan plan;
   // A ball found reaching into a patch its feature does not bound is shrunk
@@ -143,27 +140,26 @@ MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& given,
       plan = planner->plan();
       in_protection = false;
     }
-    protect_seconds = seconds_since(t);
+    protect_seconds = phase.seconds();
     for (bool restart = true; restart;) {
       refiner =
           std::make_unique<detail::Refiner>(oracle, criteria, options, protect ? &plan : nullptr);
       refiner->set_deadline(deadline);
-      t = std::chrono::steady_clock::now();
+      phase.restart();
       announce(options, "inserting initial points");
       refiner->insert_initial_points();
-      initial += seconds_since(t);
-      t = std::chrono::steady_clock::now();
+      initial += phase.lap();
       announce(options, "refining");
       refiner->refine(protect && restarts < kMaxRestarts);
       restart = false;
       const bool out_of_time = refiner->stats().time_limit_reached;
       if (protect && restarts < kMaxRestarts && !refiner->conflicts().empty() && !out_of_time) {
-        const auto ts = std::chrono::steady_clock::now();
+        const Stopwatch shrinking;
         announce(options, "protecting sharp features");
         in_protection = true;
         restart = planner->shrink(refiner->conflicts(), plan);
         in_protection = false;
-        protect_seconds += seconds_since(ts);
+        protect_seconds += shrinking.seconds();
         if (restart) {
           ++restarts;
         } else {
@@ -171,7 +167,7 @@ MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& given,
           refiner->refine();  // as small as the minimum size allows: finish this run
         }
       }
-      refine += seconds_since(t);
+      refine += phase.seconds();
     }
   } catch (const detail::TimeLimitReached&) {
     MeshResult stopped;  // no mesh: what the run reached is the time limit
@@ -179,7 +175,7 @@ MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& given,
     stopped.stats.time_limit_reached = true;
     stopped.stats.stopped_in =
         in_protection ? MeshingPhase::protection : MeshingPhase::initial_points;
-    stopped.stats.seconds_protect = in_protection ? seconds_since(t) : protect_seconds;
+    stopped.stats.seconds_protect = in_protection ? phase.seconds() : protect_seconds;
     stopped.stats.seconds_initial = initial;
     return stopped;
   }
@@ -188,7 +184,7 @@ MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& given,
   ExudationOptions exudation = options.exudation;
   if (options.time_limit_seconds > 0) {
     // Exudation gets what is left of the run's time (nothing after a stop).
-    const double left = options.time_limit_seconds - seconds_since(run_start);
+    const double left = options.time_limit_seconds - run_clock.seconds();
     if (refiner->stats().time_limit_reached || left <= 0) exudation.enabled = false;
     if (exudation.time_limit_seconds <= 0 || exudation.time_limit_seconds > left) {
       exudation.time_limit_seconds = std::max(left, 1e-9);
@@ -201,7 +197,7 @@ MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& given,
                                              options.threads);
   }
 
-  t = std::chrono::steady_clock::now();
+  phase.restart();
   announce(options, "extracting the mesh");
   result.mesh = refiner->extract_mesh();
   result.stats = refiner->stats();
@@ -212,7 +208,7 @@ MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& given,
   result.stats.seconds_protect = protect_seconds;
   result.stats.seconds_initial = initial;
   result.stats.seconds_refine = refine;
-  result.stats.seconds_extract = seconds_since(t);
+  result.stats.seconds_extract = phase.seconds();
   // The triangulation is no longer needed: free it before the improvement,
   // which builds its own structures over the extracted mesh (peak memory).
   refiner.reset();
@@ -223,7 +219,7 @@ MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& given,
   improvement.threads = options.threads;
   if (options.time_limit_seconds > 0) {
     // The improvement gets what is left of the run's time (nothing: it does not run).
-    const double left = options.time_limit_seconds - seconds_since(run_start);
+    const double left = options.time_limit_seconds - run_clock.seconds();
     if (left <= 0) improvement.enabled = false;
     if (improvement.time_limit_seconds <= 0 || improvement.time_limit_seconds > left) {
       improvement.time_limit_seconds = std::max(left, 1e-9);

@@ -10,6 +10,7 @@
 #include <map>
 
 #include "rdmesh/errors.h"
+#include "rdmesh/feature_name.h"
 #include "simplex_geometry.h"
 
 namespace rdmesh::detail {
@@ -320,8 +321,8 @@ std::vector<int> ProtectionPlanner::curves_touching(const BallRef& ball) const {
 }
 
 std::string ProtectionPlanner::name(const BallRef& b) const {
-  return b.curve < 0 ? "corner " + std::to_string(b.corner + 1)
-                     : "curve " + curves_[b.curve].c.info.name;
+  return b.curve < 0 ? feature_name(CornerId{b.corner + 1})
+                     : feature_name(curves_[b.curve].c.info.id, curves_[b.curve].c.info.name);
 }
 
 double ProtectionPlanner::feature_distance(const BallRef& b, const Point3& x) const {

@@ -13,6 +13,7 @@
 #include <cmath>
 
 #include "rdmesh/errors.h"
+#include "rdmesh/feature_name.h"
 
 namespace rdmesh::detail {
 
@@ -348,11 +349,11 @@ void Refiner::update_facet(Cell_handle c, int i) {
 std::string Refiner::describe(const VertexInfo& v) const {
   switch (v.dim) {
     case FeatureDim::kCorner:
-      return "corner " + std::to_string(v.feature);
+      return feature_name(CornerId{v.feature});
     case FeatureDim::kCurve:
-      return "curve " + curves_[v.feature - 1].info.name;
+      return feature_name(CurveId{v.feature}, curves_[v.feature - 1].info.name);
     case FeatureDim::kPatch:
-      return "patch " + std::to_string(v.feature);
+      return feature_name(PatchId{v.feature});
     case FeatureDim::kVolume:
       return "volume";
   }

@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <set>
 
+#include "rdmesh/feature_name.h"
+
 namespace rdmesh {
 namespace {
 
@@ -59,8 +61,7 @@ FidelityReport check_fidelity(const QualityReport& quality, const ModelMeasures&
       const std::size_t k = static_cast<std::size_t>(s.id.value) - 1;
       if (k >= model.subdomain_volume.size()) continue;
       r.volumes.push_back(
-          compare(s.id, s.name.empty() ? "subdomain " + std::to_string(s.id.value) : s.name,
-                  s.volume, model.subdomain_volume[k],
+          compare(s.id, feature_name(s.id, s.name), s.volume, model.subdomain_volume[k],
                   allowed_deviation(s.id, model, quality, patches, facet_distance)));
     }
   } else if (model.total_volume) {
@@ -99,7 +100,7 @@ FidelityReport check_fidelity(const QualityReport& quality, const ModelMeasures&
       continue;
     }
     r.missing_patches.push_back(p.id);
-    r.problems.push_back("patch " + std::to_string(p.id.value) + " has no triangle");
+    r.problems.push_back(feature_name(p.id, p.name) + " has no triangle");
   }
   std::set<int> chained;
   for (const CurveStats& c : quality.curves) {
@@ -112,8 +113,7 @@ FidelityReport check_fidelity(const QualityReport& quality, const ModelMeasures&
       continue;
     }
     r.broken_curves.push_back(c.id);
-    r.problems.push_back("curve " + std::to_string(c.id.value) + " (" + c.name +
-                         ") is not one chain of edges");
+    r.problems.push_back(feature_name(c.id, c.name) + " is not one chain of edges");
   }
   r.passed = r.problems.empty();
   return r;

@@ -6,10 +6,10 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <string>
 
 #include "rdmesh/errors.h"
+#include "rdmesh/stopwatch.h"
 #include "tet_faces.h"
 
 namespace rdmesh {
@@ -110,7 +110,7 @@ double largest_share(const std::vector<idx_t>& part, int parts) {
 }  // namespace
 
 PartitionStats partition_mesh(TetMesh& mesh, int parts) {
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch clock;
   if (mesh.tets.empty()) {
     throw InputError("partitions need tetrahedra: a surface-only mesh cannot be partitioned");
   }
@@ -179,7 +179,7 @@ PartitionStats partition_mesh(TetMesh& mesh, int parts) {
     mesh.corner_partition[c] =
         smallest_partition(mesh, vt, mesh.corner_vertices[c], std::array<int, 0>{});
   }
-  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  stats.seconds = clock.seconds();
   return stats;
 }
 

@@ -4,7 +4,6 @@
 #include "rdmesh/second_order.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -13,6 +12,7 @@
 #include <vector>
 
 #include "rdmesh/errors.h"
+#include "rdmesh/stopwatch.h"
 
 namespace rdmesh {
 namespace {
@@ -212,7 +212,7 @@ std::array<Point3, 10> tet10_nodes(const TetMesh& mesh, std::size_t t) {
 
 SecondOrderStats make_second_order(TetMesh& mesh, const DomainOracle& oracle,
                                    const SecondOrderOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch clock;
   if (is_second_order(mesh))
     throw InputError("make_second_order: the mesh is already second order");
   if (!(options.min_scaled_jacobian >= 0 && options.min_scaled_jacobian < 1)) {
@@ -257,7 +257,7 @@ SecondOrderStats make_second_order(TetMesh& mesh, const DomainOracle& oracle,
     stats.max_relative_offset = std::max(stats.max_relative_offset,
                                          distance(mesh.vertices[first_mid + e], chord[e]) / length);
   }
-  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  stats.seconds = clock.seconds();
   return stats;
 }
 

@@ -6,7 +6,6 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
-#include <chrono>
 #include <map>
 #include <memory>
 #include <optional>
@@ -21,6 +20,7 @@
 #include "rdmesh/errors.h"
 #include "rdmesh/mesh_run.h"
 #include "rdmesh/run_setup.h"
+#include "rdmesh/stopwatch.h"
 
 namespace py = pybind11;
 
@@ -145,13 +145,9 @@ PyMesh naming_input(const std::string& input, Run run) {
   }
 }
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 PyMesh mesh_file(const std::string& path, const std::vector<std::string>& args,
                  const py::object& progress) {
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch clock;
   const run::Options opt = parse_options(path, args);
   return naming_input(path, [&] {
     run::check_paths(opt);
@@ -163,7 +159,7 @@ PyMesh mesh_file(const std::string& path, const std::vector<std::string>& args,
       py::gil_scoped_release release;
       input = run::load_input(opt);
     }
-    PyMesh out = mesh_input(opt, input, progress, true, seconds_since(start));
+    PyMesh out = mesh_input(opt, input, progress, true, clock.seconds());
     out.input = path;
     return out;
   });
@@ -175,7 +171,7 @@ PyMesh mesh_file(const std::string& path, const std::vector<std::string>& args,
 PyMesh mesh_json(const std::string& text, const std::string& origin, const py::dict& functions,
                  const py::dict& curves, const std::vector<std::string>& args,
                  const py::object& progress) {
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch clock;
   const run::Options opt = parse_options(origin, args);
   run::check_output_names(opt);
   run::check_outputs(opt);
@@ -203,7 +199,7 @@ PyMesh mesh_json(const std::string& text, const std::string& origin, const py::d
   }
   const bool pure = external.functions.empty() && external.curves.empty();
   return naming_input(origin,
-                      [&] { return mesh_input(opt, input, progress, pure, seconds_since(start)); });
+                      [&] { return mesh_input(opt, input, progress, pure, clock.seconds()); });
 }
 
 PyMesh mesh_oracle(PyOracleBase& oracle, const std::vector<std::string>& args,

@@ -1,11 +1,10 @@
 #include "rdmesh/mesh_run.h"
 
-#include <chrono>
-
 #include "model_measures.h"
 #include "rdmesh/atomic_file.h"
 #include "rdmesh/mesh_writers.h"
 #include "rdmesh/number_text.h"
+#include "rdmesh/stopwatch.h"
 
 namespace rdmesh::run {
 
@@ -23,7 +22,7 @@ MeshRun mesh_loaded(const Options& opt, const LoadedInput& input, const Criteria
 
   // The cheap measures and the fidelity check: a mesh that does not match the
   // model is not written (unless asked).
-  const auto t = std::chrono::steady_clock::now();
+  const Stopwatch clock;
   announce(base, "checking the mesh against the model");
   const bool full = opt.full_check || !opt.report.empty();
   run.quality = measure_quality(run.result.mesh, full ? input.oracle.get() : nullptr, opt.threads);
@@ -33,7 +32,7 @@ MeshRun mesh_loaded(const Options& opt, const LoadedInput& input, const Criteria
                        patch_facet_distances(run.result.mesh, criteria.facet_distance),
                        run.result.stats.curves_below_min_size);
   }
-  run.times.report = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+  run.times.report = clock.seconds();
   return run;
 }
 
@@ -67,7 +66,7 @@ void apply_fem(const Options& opt, const AppliedSizes& sizes, const DomainOracle
 
 void write_outputs(const Options& opt, const DomainOracle& oracle, const MeshOptions& options,
                    bool write_mesh_too, MeshRun& run) {
-  const auto t = std::chrono::steady_clock::now();
+  const Stopwatch clock;
   if (write_mesh_too) {
     if (!opt.output.empty()) {
       announce(options, "writing " + printable(opt.output));
@@ -78,7 +77,7 @@ void write_outputs(const Options& opt, const DomainOracle& oracle, const MeshOpt
       write_picture(run.result.mesh, opt.picture, opt.input);
     }
   }
-  run.times.write = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+  run.times.write = clock.seconds();
   if (!opt.report.empty()) {
     announce(options, "writing " + printable(opt.report));
     const nlohmann::json report = run_report(opt, oracle, run);

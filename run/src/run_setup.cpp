@@ -18,6 +18,7 @@
 #include "rdmesh/atomic_file.h"
 #include "rdmesh/cad_oracle.h"
 #include "rdmesh/errors.h"
+#include "rdmesh/feature_name.h"
 #include "rdmesh/input_file.h"
 #include "rdmesh/mesh_writers.h"
 #include "rdmesh/parallel_for.h"
@@ -469,7 +470,7 @@ void check_output_format(const std::string& path, const WriteOptions& write) {
 std::vector<std::string> run_warnings(const RefinementStats& stats) {
   std::vector<std::string> out;
   for (const PatchId& patch : stats.missing_patches) {
-    out.push_back("patch " + std::to_string(patch.value) +
+    out.push_back(feature_name(patch) +
                   " has no triangle in the mesh (too small for the sizes, or missed by the "
                   "initial points)");
   }

@@ -171,7 +171,7 @@ TEST(FeatureSamples, AngleViolatingWedgeWithRefineEdgesEndsByTheGuard) {
   ASSERT_TRUE(m.result.stats.guard_fired());
   bool names_axis = false;
   for (const std::string& f : m.result.stats.guard_features) {
-    names_axis = names_axis || f.find("curve axis") != std::string::npos;
+    names_axis = names_axis || f.find("(axis)") != std::string::npos;
   }
   EXPECT_TRUE(names_axis) << "the guard report should name the 30-degree curve";
 }

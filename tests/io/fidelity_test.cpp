@@ -53,7 +53,8 @@ TEST(Fidelity, AVolumeBeyondTheToleranceFailsAndIsNamed) {
       check_fidelity(q, two_cube_model(0.1, 2e-3), mesh.patches, mesh.curves, 1e-3);
   EXPECT_FALSE(r.passed);
   ASSERT_EQ(r.problems.size(), 1u);
-  EXPECT_NE(r.problems[0].find("left: volume 0.001, model 0.002 (-50.0%"), std::string::npos)
+  EXPECT_NE(r.problems[0].find("subdomain 1 (left): volume 0.001, model 0.002 (-50.0%"),
+            std::string::npos)
       << r.problems[0];
   EXPECT_FALSE(r.volumes[0].passed);
   EXPECT_TRUE(r.volumes[1].passed);

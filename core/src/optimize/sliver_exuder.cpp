@@ -3,7 +3,6 @@
 #include "sliver_exuder.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <queue>
@@ -13,6 +12,7 @@
 #include "rdmesh/errors.h"
 #include "rdmesh/number_text.h"
 #include "rdmesh/parallel_for.h"
+#include "rdmesh/stopwatch.h"
 #include "tet_shape.h"
 #include "vertex_perturber.h"
 #include "weight_pump.h"
@@ -93,7 +93,7 @@ class Exuder {
         bound_cosine_(std::cos(options.sliver_bound_deg * M_PI / 180)) {}
 
   ExudationStats run() {
-    start_ = std::chrono::steady_clock::now();
+    clock_.restart();
     ExudationStats stats;
     stats.ran = true;
     std::uint32_t next_stamp = prepare();
@@ -157,9 +157,7 @@ class Exuder {
     return pump.next_stamp();
   }
 
-  double elapsed() const {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  }
+  double elapsed() const { return clock_.seconds(); }
 
   /// The worst-first loop: `step(v, id)` tries vertex v and returns the cells
   /// it created when it changed the mesh (nullptr otherwise). A vertex is
@@ -284,7 +282,7 @@ class Exuder {
   std::priority_queue<QueuedVertex> queue_;
   std::vector<Cell_handle> cells_;  ///< finite cells, scratch of domain_cosines
   std::vector<double> cosines_;
-  std::chrono::steady_clock::time_point start_;
+  Stopwatch clock_;
 };
 
 void check_invariants(const Triangulation& tr) {

@@ -10,7 +10,6 @@
 #include "rdmesh/tet_improvement.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -21,6 +20,7 @@
 #include "patch_smoothing.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/parallel_for.h"
+#include "rdmesh/stopwatch.h"
 #include "tet_flips.h"
 #include "tet_insertion.h"
 #include "tet_shape.h"
@@ -94,10 +94,8 @@ TetImprovementStats improve_tets(TetMesh& mesh, const TetImprovementOptions& opt
         ">= 0, the insertions a fraction >= 0, the time limit a number of "
         "seconds >= 0 and the threads >= 0 (0: all cores)");
   }
-  const auto start = std::chrono::steady_clock::now();
-  const auto elapsed = [&] {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  };
+  const Stopwatch clock;
+  const auto elapsed = [&] { return clock.seconds(); };
   TetImprovementStats stats;
   stats.ran = true;
   TetTopology topo(mesh, options.threads);
