@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Configures and builds rdmesh into build/ (or $RDMESH_BUILD_DIR) with 2 jobs.
-# Extra arguments go to cmake's configure step (e.g. -DRDMESH_SANITIZE=ON).
+# Extra arguments, and those in $RDMESH_CMAKE_ARGS, go to cmake's configure step
+# (e.g. -DRDMESH_SANITIZE=ON).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 dir=${RDMESH_BUILD_DIR:-build}
-cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
+# shellcheck disable=SC2086  # RDMESH_CMAKE_ARGS is a list of words
+cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Release ${RDMESH_CMAKE_ARGS:-} "$@" >/dev/null
 cmake --build "$dir" -j "${RDMESH_JOBS:-2}"

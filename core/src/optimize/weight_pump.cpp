@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "../simplex_geometry.h"
+#include "cone_hole.h"
 #include "rdmesh/errors.h"
 #include "tet_shape.h"
 
@@ -311,8 +312,8 @@ bool WeightPump::commit(Vertex_handle v, double weight) {
     outer.push_back({n, n->index(f.inner), f.label});
   }
   const BoundaryFacet& start = boundary_.front();
-  // Marks are set: re-triangulate the hole as the cone from v (the same vertex object).
-  tr_.tds()._insert_in_hole(zone_.begin(), zone_.end(), start.inner, start.index, v);
+  // Re-triangulate the hole as the cone from v (the same vertex object).
+  cone_hole(tr_, zone_, start.inner, start.index, v);
   v->set_point(wp);
 
   new_cells_.clear();

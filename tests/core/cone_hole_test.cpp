@@ -1,0 +1,81 @@
+// cone_hole(), the one call into CGAL's internal TDS API (_insert_in_hole): raising a
+// vertex's weight in place must give the regular triangulation of the new weighted
+// points, with the same vertex object. Checked against a triangulation built from
+// scratch, so a CGAL upgrade that changes the internal call fails here first.
+#include "optimize/cone_hole.h"
+
+#include <gtest/gtest.h>
+
+#include <iterator>
+#include <random>
+#include <vector>
+
+namespace rdmesh::detail {
+namespace {
+
+TEST(ConeHole, RaisingAWeightInPlaceGivesTheRegularTriangulation) {
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<Weighted_point> points;
+  for (int i = 0; i < 200; ++i) points.emplace_back(Kernel::Point_3(u(rng), u(rng), u(rng)), 0.0);
+  Triangulation tr(points.begin(), points.end());
+  ASSERT_EQ(tr.number_of_vertices(), points.size());
+
+  int seen = 0;  // interior vertices passed over: every 7th is raised
+  for (int round = 0; round < 20; ++round) {
+    // An interior vertex (no infinite cell around it) gets a weight of a fraction
+    // of its squared distance to its nearest neighbour: it stays a vertex.
+    Vertex_handle v;
+    for (auto it = tr.finite_vertices_begin(); it != tr.finite_vertices_end(); ++it) {
+      std::vector<Cell_handle> star;
+      tr.incident_cells(it, std::back_inserter(star));
+      bool inner = true;
+      for (const Cell_handle& c : star) inner = inner && !tr.is_infinite(c);
+      if (inner && it->point().weight() == 0 && (seen++ % 7) == 0) {
+        v = it;
+        break;
+      }
+    }
+    ASSERT_NE(v, Vertex_handle());
+    std::vector<Vertex_handle> adjacent;
+    tr.finite_adjacent_vertices(v, std::back_inserter(adjacent));
+    double nearest = 1e300;
+    for (const Vertex_handle& w : adjacent) {
+      nearest = std::min(nearest, CGAL::squared_distance(v->point().point(), w->point().point()));
+    }
+    const Weighted_point raised_point(v->point().point(), 0.2 * nearest);
+
+    std::vector<Cell_handle> hole;
+    std::vector<Triangulation::Facet> boundary;
+    tr.find_conflicts(raised_point, v->cell(), std::back_inserter(boundary),
+                      std::back_inserter(hole));
+    ASSERT_FALSE(hole.empty());
+    ASSERT_FALSE(boundary.empty());
+    const Triangulation::Facet start = boundary.front();
+    const std::size_t vertices = tr.number_of_vertices();
+    cone_hole(tr, hole, start.first, start.second, v);
+    v->set_point(raised_point);
+
+    // The same vertex object, no vertex lost or added, a valid regular triangulation,
+    // and one new cell around v per boundary facet of the hole.
+    ASSERT_TRUE(tr.is_vertex(v));
+    EXPECT_EQ(tr.number_of_vertices(), vertices);
+    EXPECT_TRUE(tr.is_valid());
+    std::vector<Cell_handle> star;
+    tr.incident_cells(v, std::back_inserter(star));
+    EXPECT_EQ(star.size(), boundary.size());
+
+    // The same triangulation as one built from scratch over the same weighted points.
+    std::vector<Weighted_point> now;
+    for (auto it = tr.finite_vertices_begin(); it != tr.finite_vertices_end(); ++it) {
+      now.push_back(it->point());
+    }
+    const Triangulation fresh(now.begin(), now.end());
+    EXPECT_EQ(fresh.number_of_vertices(), tr.number_of_vertices());
+    EXPECT_EQ(fresh.number_of_finite_cells(), tr.number_of_finite_cells());
+    EXPECT_EQ(fresh.number_of_finite_facets(), tr.number_of_finite_facets());
+  }
+}
+
+}  // namespace
+}  // namespace rdmesh::detail
