@@ -1,6 +1,8 @@
 // The cell level: rule R5 on the cells of D|O (RR-7912 section 3).
 #include "level_cells.h"
 
+#include "level_curves.h"
+#include "level_facets.h"
 #include "simplex_geometry.h"
 
 namespace rdmesh::detail {
@@ -38,6 +40,36 @@ std::optional<ElementEntry> CellLevel::pop() {
   queue_.pop();
   if (!complex_.is_live(e.stamp) || !violation(e.cell)) return std::nullopt;
   return e;
+}
+
+bool CellLevel::refine(const ElementEntry& entry, Insertion& insertion, CurveLevel& curves,
+                       FacetLevel& facets) {
+  const Cell_handle c = entry.cell;
+  const Point3 center = c->info().circumcenter;
+  if (curves.keeps_cell_centre(c)) return false;
+  const Weighted_point p = to_weighted(center);
+  if (!insertion.find_zone(p, c)) return false;
+  bool redirected = false, inserted = false;
+  if (const std::optional<bool> edge = curves.refine_encroached(center, insertion)) {
+    redirected = true;
+    inserted = *edge;
+  } else {
+    Cell_handle fc;
+    int fi = -1;
+    if (facets.encroached(center, insertion.zone(), fc, fi)) {
+      redirected = true;
+      inserted = facets.refine(fc, fi, insertion, curves);
+    }
+  }
+  if (redirected) {
+    ++insertion.stats().encroachments;
+    // The cell may still need refining.
+    if (inserted && complex_.is_live(entry.stamp)) queue_.push(entry);
+    return inserted;
+  }
+  if (insertion.insert(p, VertexInfo{}) == Vertex_handle()) return false;
+  ++insertion.stats().inserted_cell_centers;
+  return true;
 }
 
 }  // namespace rdmesh::detail

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "level_curves.h"
 #include "simplex_geometry.h"
 
 namespace rdmesh::detail {
@@ -65,6 +66,47 @@ std::optional<ElementEntry> FacetLevel::pop() {
   queue_.pop();
   if (!complex_.is_live(e.stamp) || !violation(e.cell, e.facet)) return std::nullopt;
   return e;
+}
+
+bool FacetLevel::refine(Cell_handle c, int i, Insertion& insertion, CurveLevel& curves) {
+  const Point3 center = c->info().surface_center[i];
+  const Weighted_point p = to_weighted(center);
+  // The ball center lies on the dual Voronoi edge, hence inside the Delaunay
+  // ball of at least one of the two incident cells.
+  Cell_handle start = c;
+  const Triangulation& tr = complex_.triangulation();
+  if (tr.side_of_power_sphere(start, p) != CGAL::ON_BOUNDED_SIDE) start = c->neighbor(i);
+  const VertexInfo info{FeatureDim::kPatch, c->info().facet_patch[i], 0, -1};
+  if (curves.keeps_facet_centre(c, i, info, insertion)) return false;
+  if (!insertion.find_zone(p, start)) {
+    insertion.record_guard(info, c->vertex((i + 1) & 3)->info());  // the center is a vertex
+    return false;
+  }
+  if (const std::optional<bool> inserted = curves.refine_encroached(center, insertion)) {
+    ++insertion.stats().encroachments;
+    return *inserted;
+  }
+  if (insertion.insert(p, info) == Vertex_handle()) return false;
+  ++insertion.stats().inserted_facet_centers;
+  return true;
+}
+
+bool FacetLevel::encroached(const Point3& x, const std::vector<Cell_handle>& zone,
+                            Cell_handle& cell, int& facet) const {
+  double best = -1;
+  for (const Cell_handle& z : zone) {
+    for (int i = 0; i < 4; ++i) {
+      if (z->info().facet_patch[i] == 0) continue;
+      const Point3 sc = z->info().surface_center[i];
+      const double r2 = complex_.facet_power(z, i, sc);
+      if (squared_norm(x - sc) < r2 && r2 > best) {
+        cell = z;
+        facet = i;
+        best = r2;
+      }
+    }
+  }
+  return best >= 0;
 }
 
 }  // namespace rdmesh::detail

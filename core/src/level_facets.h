@@ -6,19 +6,24 @@
 //   R4.2  the facet's smallest angle is below facet_angle_deg;
 //   and the approximation bound (as CGAL Mesh_3): the facet lies within
 //   facet_distance of its ball's centre.
-// refine-facet-or-edge inserts the ball's centre (refiner.cpp).
+// refine-facet-or-edge inserts the ball's centre, or refines the arc whose
+// ball the centre lies in.
 #pragma once
 
 #include <cstddef>
 #include <optional>
 #include <queue>
+#include <vector>
 
 #include "element_entry.h"
+#include "insertion.h"
 #include "rdmesh/criteria.h"
 #include "restricted_complex.h"
 #include "violation.h"
 
 namespace rdmesh::detail {
+
+class CurveLevel;
 
 class FacetLevel {
  public:
@@ -35,6 +40,18 @@ class FacetLevel {
   /// Pops the worst entry: the facet, if it still exists and still violates a
   /// rule; else nullopt (the entry was stale).
   std::optional<ElementEntry> pop();
+
+  /// refine-facet-or-edge for facet (c, i): consider the centre c_f of its
+  /// surface Delaunay ball; if it lies in the ball of an arc, refine that arc,
+  /// else insert c_f (unless the curve level keeps it out). Whether a point
+  /// was inserted.
+  bool refine(Cell_handle c, int i, Insertion& insertion, CurveLevel& curves);
+  /// The largest surface Delaunay ball of the facets of `zone` containing x:
+  /// true, with that facet, when there is one. (A surface ball lies in the
+  /// union of its facet's two Delaunay balls, so a ball containing a point
+  /// belongs to a facet of the point's conflict zone.)
+  bool encroached(const Point3& x, const std::vector<Cell_handle>& zone, Cell_handle& cell,
+                  int& facet) const;
 
  private:
   const RestrictedComplex& complex_;

@@ -102,14 +102,15 @@ void Refiner::extract_features(TetMesh& mesh) {
     return it == index_at.end() ? -1 : it->second;
   };
   mesh.curves = oracle_.curves();
-  mesh.corners = corners_;
-  for (std::size_t i = 0; i < corners_.size(); ++i) {
-    const int index = index_of(corners_[i].point);
+  const std::vector<CornerInfo>& corners = curves_.corners();
+  mesh.corners = corners;
+  for (std::size_t i = 0; i < corners.size(); ++i) {
+    const int index = index_of(corners[i].point);
     if (index < 0) continue;  // in no tetrahedron: the report shows the corner missing
     mesh.corner_vertices.push_back(index);
     mesh.corner_ids.push_back(CornerId{static_cast<int>(i) + 1});
   }
-  for (const CurveState& c : curves_) {
+  for (const CurveState& c : curves_.curves()) {
     for (auto a = c.samples.begin(); std::next(a) != c.samples.end(); ++a) {
       const int i0 = index_of(a->second.position);
       const int i1 = index_of(std::next(a)->second.position);

@@ -11,9 +11,13 @@
 #pragma once
 
 #include <map>
+#include <optional>
+#include <string>
 #include <vector>
 
+#include "optimize/chain_edges.h"
 #include "rdmesh/curve.h"
+#include "rdmesh/oracle.h"
 #include "triangulation_types.h"
 
 namespace rdmesh::detail {
@@ -42,6 +46,34 @@ struct ArcRef {
   int curve;  ///< index into the curve table (id - 1)
   double t;
   Vertex_handle a, b;
+};
+
+/// D|L: the samples of every curve, in parameter order, with the balls of the
+/// arcs between them, and the corners. The levels of level_curves.h fill it.
+class RestrictedCurves {
+ public:
+  /// Reads the oracle's corners and curves (OracleError unless their ids are 1..n in order).
+  explicit RestrictedCurves(const DomainOracle& oracle);
+
+  std::vector<CurveState>& curves() { return curves_; }  ///< index = CurveId - 1
+  const std::vector<CurveState>& curves() const { return curves_; }
+  const std::vector<CornerInfo>& corners() const { return corners_; }  ///< index = CornerId - 1
+  /// The patches each corner bounds, and each curve (index = id - 1), as values.
+  std::vector<std::vector<int>> corner_patches() const;
+  std::vector<std::vector<int>> curve_patches() const;
+
+  /// The arcs having vertex v as an endpoint.
+  void arcs_of(Vertex_handle v, std::vector<std::pair<int, CurveState::Arc>>& out);
+  /// The live arc an entry refers to, or nullopt when it was split meanwhile.
+  std::optional<CurveState::Arc> find_arc(const ArcRef& ref);
+  /// The edges of D|L: consecutive samples of every curve.
+  ChainEdges chain_edges() const;
+  /// The feature v lies on (feature_name()), or "volume".
+  std::string describe(const VertexInfo& v) const;
+
+ private:
+  std::vector<CurveState> curves_;
+  std::vector<CornerInfo> corners_;
 };
 
 }  // namespace rdmesh::detail

@@ -1,0 +1,248 @@
+// The protecting balls of [CDR07] as the curve level (RR-7912's conclusion):
+// the plan's balls go into the triangulation as weighted points before any
+// patch point, and their chains are D|L already, so this level never refines.
+// It keeps refinement points out of the balls, and finds the balls that reach
+// a patch their feature does not bound (R3 cannot be met there until they
+// shrink: generate_mesh() shrinks them and starts again).
+#include <CGAL/Spatial_sort_traits_adapter_3.h>
+#include <CGAL/property_map.h>
+#include <CGAL/spatial_sort.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "level_curves.h"
+#include "level_facets.h"
+#include "rdmesh/errors.h"
+#include "rdmesh/number_text.h"
+
+namespace rdmesh::detail {
+
+ProtectingBallsLevel::ProtectingBallsLevel(const ProtectionPlan& plan, RestrictedCurves& curves,
+                                           RestrictedComplex& complex, const DomainOracle& oracle,
+                                           const Criteria& criteria)
+    : plan_(plan),
+      curves_(curves),
+      complex_(complex),
+      tr_(complex.triangulation()),
+      oracle_(oracle),
+      criteria_(criteria) {}
+
+void ProtectingBallsLevel::insert_initial_points(Deadline& deadline, RefinementStats& stats) {
+  const std::vector<CornerInfo>& corners = curves_.corners();
+  std::vector<CurveState>& curves = curves_.curves();
+  // Every ball once (a corner's ball for all its curves, a closed curve's first
+  // sample for its repeated last one), inserted in spatial order: the walks
+  // from one insertion to the next become short. The regular triangulation
+  // does not depend on the order; the creation order of its cells, which
+  // refinement follows on ties, does.
+  struct Ball {
+    Point3 point;
+    double radius;
+    FeatureDim dim;
+    int feature;
+    double t;
+  };
+  std::vector<Ball> balls;
+  for (std::size_t q = 0; q < corners.size(); ++q) {
+    balls.push_back({corners[q].point, plan_.corner_radius[q], FeatureDim::kCorner,
+                     static_cast<int>(q) + 1, 0});
+  }
+  std::vector<std::size_t> first_ball(curves.size());  // of each curve's own balls
+  for (std::size_t j = 0; j < curves.size(); ++j) {
+    const std::vector<BallSample>& s = plan_.curves[j].samples;
+    first_ball[j] = balls.size();
+    const std::size_t from = curves[j].info.closed ? 0 : 1;
+    for (std::size_t i = from; i + 1 < s.size(); ++i) {
+      balls.push_back(
+          {s[i].point, s[i].radius, FeatureDim::kCurve, static_cast<int>(j) + 1, s[i].t});
+    }
+  }
+  std::vector<Kernel::Point_3> points;
+  for (const Ball& b : balls) points.emplace_back(b.point.x, b.point.y, b.point.z);
+  std::vector<std::size_t> order(balls.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  using SortTraits =
+      CGAL::Spatial_sort_traits_adapter_3<Kernel,
+                                          CGAL::Pointer_property_map<Kernel::Point_3>::type>;
+  CGAL::spatial_sort(order.begin(), order.end(), SortTraits(CGAL::make_property_map(points)));
+
+  std::vector<Vertex_handle> vertex(balls.size());
+  std::size_t shared = 0;  // balls equal to an earlier one (coincident features)
+  Cell_handle hint;
+  for (const std::size_t k : order) {
+    deadline.check(256);
+    const Ball& b = balls[k];
+    const Weighted_point wp(points[k], b.radius * b.radius);
+    const Vertex_handle v = tr_.insert(wp, hint);
+    if (v != Vertex_handle() && v->info().dim != FeatureDim::kVolume && v->point() == wp) {
+      // Features closer than anything the planner can separate (edges of
+      // touching solids left unmerged) share the vertex: the planner made
+      // their balls equal, and the conflict is reported.
+      vertex[k] = v;
+      ++shared;
+      continue;
+    }
+    if (v == Vertex_handle() || v->info().dim != FeatureDim::kVolume) {
+      throw InternalError("protecting ball at " + point_text(b.point) +
+                          " is hidden by another or coincides with it");
+    }
+    v->info().dim = b.dim;
+    v->info().feature = b.feature;
+    v->info().t = b.t;
+    v->info().ball_weight = b.radius * b.radius;
+    hint = v->cell();
+    vertex[k] = v;
+  }
+  for (std::size_t j = 0; j < curves.size(); ++j) {
+    CurveState& c = curves[j];
+    const std::vector<BallSample>& s = plan_.curves[j].samples;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      Vertex_handle v;
+      if (c.info.closed) {
+        v = vertex[first_ball[j] + (i + 1 == s.size() ? 0 : i)];
+      } else if (i == 0) {
+        v = vertex[c.info.start.value - 1];
+      } else if (i + 1 == s.size()) {
+        v = vertex[c.info.end.value - 1];
+      } else {
+        v = vertex[first_ball[j] + i - 1];
+      }
+      c.samples[s[i].t] = CurveSample{v, to_point3(v->point())};
+    }
+  }
+  // A vertex hidden by a later ball would vanish from the triangulation.
+  if (tr_.number_of_vertices() + shared != balls.size()) {
+    throw InternalError("protecting balls hide one another (" + std::to_string(balls.size()) +
+                        " inserted, " + std::to_string(tr_.number_of_vertices()) + " remain)");
+  }
+  stats.initial_points += balls.size() - shared;
+}
+
+bool ProtectingBallsLevel::keeps_out(const Point3& p, Cell_handle hint) const {
+  if (tr_.number_of_vertices() == 0) return false;
+  const Kernel::Point_3 x(p.x, p.y, p.z);
+  const Vertex_handle v = tr_.nearest_power_vertex(x, hint);
+  if (v == Vertex_handle()) return false;
+  return !(squared_norm(p - to_point3(v->point())) - v->point().weight() > 0);
+}
+
+bool ProtectingBallsLevel::keeps_facet_centre(Cell_handle c, int i, const VertexInfo& info,
+                                              Insertion& insertion) {
+  const Point3 center = c->info().surface_center[i];
+  // A ball reaching into a patch its feature does not bound: R3 cannot be
+  // met there until the ball shrinks. Other facets whose surface ball has no
+  // positive radius lie inside the balls: protected, not refined.
+  if (ball_conflict(c, i) || !(complex_.facet_power(c, i, center) > 0)) return true;
+  // The guard before the conflict zone: the facet's vertices are vertices
+  // of every cell in conflict, so one closer than the minimum size refuses
+  // the point as Insertion::insert would, without the zone's cost (most of
+  // the run where features lie closer than the minimum size).
+  for (int k = 1; k < 4; ++k) {
+    const Vertex_handle v = c->vertex((i + k) & 3);
+    if (insertion.too_close(center, v)) {
+      insertion.record_guard(info, v->info());
+      return true;
+    }
+  }
+  return false;
+}
+
+bool ProtectingBallsLevel::find_early_conflicts(const FacetLevel& facets) {
+  // The facets between the balls alone already show most balls that reach
+  // a patch their feature does not bound (R3), and most overlaps that stray
+  // from the surface: shrink them before any refinement work.
+  for (auto c = tr_.finite_cells_begin(); c != tr_.finite_cells_end(); ++c) {
+    for (int i = 0; i < 4; ++i) {
+      if (c->info().facet_patch[i] != 0 && c->neighbor(i)->info().stamp > c->info().stamp) {
+        if (facets.violation(c, i).rule == Rule::kR3NotFaithful) ball_conflict(c, i);
+        overlap_conflict(c, i);
+      }
+    }
+  }
+  return !conflicts_.empty();
+}
+
+bool ProtectingBallsLevel::ball_conflict(Cell_handle c, int i) {
+  const int patch = c->info().facet_patch[i];
+  const Point3 center = c->info().surface_center[i];
+  for (int k = 1; k < 4; ++k) {
+    const Vertex_handle v = c->vertex((i + k) & 3);
+    const double w = v->point().weight();
+    if (w == 0 || complex_.on_patch(v->info(), patch)) continue;
+    // The surface center is on the sphere of the facet's orthoball, so it lies
+    // near or in this ball only when the ball reaches the patch (an early,
+    // coarse facet far from the ball is refined as usual).
+    if (squared_norm(center - to_point3(v->point())) > 1.5 * w) continue;
+    add_conflict(ball_of(v->info()));
+    return true;
+  }
+  return false;
+}
+
+BallRef ProtectingBallsLevel::ball_of(const VertexInfo& info) const {
+  BallRef ref;
+  if (info.dim == FeatureDim::kCorner) {
+    ref.corner = info.feature - 1;
+  } else {
+    const std::vector<BallSample>& s = plan_.curves[info.feature - 1].samples;
+    const auto it = std::lower_bound(s.begin(), s.end(), info.t,
+                                     [](const BallSample& b, double t) { return b.t < t; });
+    ref.curve = info.feature - 1;
+    ref.index = static_cast<int>(it - s.begin());
+  }
+  return ref;
+}
+
+void ProtectingBallsLevel::add_conflict(const BallRef& ref) {
+  for (BallRef& b : conflicts_) {
+    if (b.curve == ref.curve && b.index == ref.index && b.corner == ref.corner) {
+      b.factor = std::min(b.factor, ref.factor);
+      return;
+    }
+  }
+  conflicts_.push_back(ref);
+}
+
+void ProtectingBallsLevel::overlap_conflict(Cell_handle c, int i) {
+  auto info_of = [&](int j) -> const CurveInfo& { return curves_.curves()[j].info; };
+  // The overlapping pairs of unrelated balls among the facet's vertices.
+  std::array<BallRef, 6> pairs;
+  int n = 0;
+  for (int x = 1; x < 4; ++x) {
+    const Vertex_handle a = c->vertex((i + x) & 3);
+    const double wa = a->point().weight();
+    if (wa == 0) continue;
+    const BallRef ball_a = ball_of(a->info());
+    for (int y = x + 1; y < 4; ++y) {
+      const Vertex_handle b = c->vertex((i + y) & 3);
+      const double wb = b->point().weight();
+      if (wb == 0) continue;
+      const BallRef ball_b = ball_of(b->info());
+      if (related_balls(ball_a, ball_b, info_of)) continue;
+      const double ra = std::sqrt(wa), rb = std::sqrt(wb);
+      const double need = ProtectionPlanner::disjoint_distance(ra, rb);
+      const double dist = distance(to_point3(a->point()), to_point3(b->point()));
+      if (dist >= need) continue;
+      // Down to disjoint at once (B2 for related balls), rather than by halves.
+      pairs[n] = ball_a, pairs[n + 1] = ball_b;
+      pairs[n].factor = pairs[n + 1].factor = std::min(0.5, 0.95 * dist / need);
+      n += 2;
+    }
+  }
+  if (n == 0) return;
+  // The surface within the facet distance of the centroid, along the normal.
+  const Point3 p[3] = {to_point3(c->vertex((i + 1) & 3)->point()),
+                       to_point3(c->vertex((i + 2) & 3)->point()),
+                       to_point3(c->vertex((i + 3) & 3)->point())};
+  const Point3 normal = cross(p[1] - p[0], p[2] - p[0]);
+  const double len = norm(normal);
+  if (!(len > 0)) return;
+  const Point3 g = (1.0 / 3) * (p[0] + p[1] + p[2]);
+  const Point3 reach = (1.5 * criteria_.facet_distance(g) / len) * normal;
+  if (oracle_.intersect(g - reach, g + reach)) return;
+  for (int k = 0; k < n; ++k) add_conflict(pairs[k]);
+}
+
+}  // namespace rdmesh::detail
