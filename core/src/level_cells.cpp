@@ -3,6 +3,7 @@
 
 #include "level_curves.h"
 #include "level_facets.h"
+#include "rdmesh/debug_assert.h"
 #include "simplex_geometry.h"
 
 namespace rdmesh::detail {
@@ -14,7 +15,11 @@ CellLevel::CellLevel(const RestrictedComplex& complex, const Criteria& criteria)
 
 Violation CellLevel::violation(Cell_handle c) const {
   const CellInfo& info = c->info();
+  RDMESH_DEBUG_ASSERT(info.label == kOutside.value || !complex_.triangulation().is_infinite(c),
+                      "an infinite cell is outside the domain");
   if (info.label == kOutside.value || complex_.triangulation().is_infinite(c)) return {};
+  RDMESH_DEBUG_ASSERT(is_finite(info.circumcenter) && complex_.is_live(info.stamp),
+                      "a cell of D|O is initialized and has a finite centre");
   Violation worst;
   // R5.1: Delaunay ball radius against the sizing field.
   const double sigma = criteria_.cell_size(info.circumcenter);

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "level_curves.h"
+#include "rdmesh/debug_assert.h"
 #include "simplex_geometry.h"
 
 namespace rdmesh::detail {
@@ -17,6 +18,9 @@ FacetLevel::FacetLevel(const RestrictedComplex& complex, const Criteria& criteri
 Violation FacetLevel::violation(Cell_handle c, int i) const {
   const int patch = c->info().facet_patch[i];
   if (patch == 0) return {};
+  RDMESH_DEBUG_ASSERT(
+      patch > 0 && c->neighbor(i)->info().facet_patch[c->neighbor(i)->index(c)] == patch,
+      "both cells of a restricted facet name its patch");
   const Vertex_handle v[3] = {c->vertex((i + 1) & 3), c->vertex((i + 2) & 3),
                               c->vertex((i + 3) & 3)};
   // R3: every vertex of a facet of D|S_k must lie on S_k (or on its boundary curves).

@@ -19,6 +19,19 @@
 
 namespace rdmesh::detail {
 
+namespace {
+/// A ball reaches a facet's patch when the facet's surface centre lies within
+/// sqrt(kConflictReach) radii of its centre (a squared factor on the weight).
+constexpr double kConflictReach = 1.5;
+/// Two overlapping unrelated balls shrink at once to this fraction of the
+/// distance that would make them disjoint, and at least by half.
+constexpr double kDisjointMargin = 0.95;
+constexpr double kMaxShrinkFactor = 0.5;
+/// The surface is looked for this many facet distances on each side of a
+/// facet joining overlapping balls.
+constexpr double kSurfaceSearchReach = 1.5;
+}  // namespace
+
 ProtectingBallsLevel::ProtectingBallsLevel(const ProtectionPlan& plan, RestrictedCurves& curves,
                                            RestrictedComplex& complex, const DomainOracle& oracle,
                                            const Criteria& criteria)
@@ -29,29 +42,30 @@ ProtectingBallsLevel::ProtectingBallsLevel(const ProtectionPlan& plan, Restricte
       oracle_(oracle),
       criteria_(criteria) {}
 
-void ProtectingBallsLevel::insert_initial_points(Deadline& deadline, RefinementStats& stats) {
-  const std::vector<CornerInfo>& corners = curves_.corners();
-  std::vector<CurveState>& curves = curves_.curves();
-  // Every ball once (a corner's ball for all its curves, a closed curve's first
-  // sample for its repeated last one), inserted in spatial order: the walks
-  // from one insertion to the next become short. The regular triangulation
-  // does not depend on the order; the creation order of its cells, which
-  // refinement follows on ties, does.
-  struct Ball {
-    Point3 point;
-    double radius;
-    FeatureDim dim;
-    int feature;
-    double t;
-  };
+namespace {
+
+struct Ball {
+  Point3 point;
+  double radius;
+  FeatureDim dim;
+  int feature;
+  double t;
+};
+
+/// Every ball once: a corner's ball for all its curves, a closed curve's first
+/// sample for its repeated last one. first_ball[j]: the index of curve j's
+/// own first ball.
+std::vector<Ball> gather_balls(const ProtectionPlan& plan, const std::vector<CornerInfo>& corners,
+                               const std::vector<CurveState>& curves,
+                               std::vector<std::size_t>& first_ball) {
   std::vector<Ball> balls;
   for (std::size_t q = 0; q < corners.size(); ++q) {
-    balls.push_back({corners[q].point, plan_.corner_radius[q], FeatureDim::kCorner,
-                     static_cast<int>(q) + 1, 0});
+    balls.push_back(
+        {corners[q].point, plan.corner_radius[q], FeatureDim::kCorner, static_cast<int>(q) + 1, 0});
   }
-  std::vector<std::size_t> first_ball(curves.size());  // of each curve's own balls
+  first_ball.assign(curves.size(), 0);
   for (std::size_t j = 0; j < curves.size(); ++j) {
-    const std::vector<BallSample>& s = plan_.curves[j].samples;
+    const std::vector<BallSample>& s = plan.curves[j].samples;
     first_ball[j] = balls.size();
     const std::size_t from = curves[j].info.closed ? 0 : 1;
     for (std::size_t i = from; i + 1 < s.size(); ++i) {
@@ -59,6 +73,16 @@ void ProtectingBallsLevel::insert_initial_points(Deadline& deadline, RefinementS
           {s[i].point, s[i].radius, FeatureDim::kCurve, static_cast<int>(j) + 1, s[i].t});
     }
   }
+  return balls;
+}
+
+/// Inserts the balls as weighted points in spatial order: the walks from one
+/// insertion to the next become short. The regular triangulation does not
+/// depend on the order; the creation order of its cells, which refinement
+/// follows on ties, does. Returns each ball's vertex; `shared` counts the
+/// balls equal to an earlier one.
+std::vector<Vertex_handle> insert_balls(Triangulation& tr, const std::vector<Ball>& balls,
+                                        Deadline& deadline, std::size_t& shared) {
   std::vector<Kernel::Point_3> points;
   for (const Ball& b : balls) points.emplace_back(b.point.x, b.point.y, b.point.z);
   std::vector<std::size_t> order(balls.size());
@@ -69,13 +93,13 @@ void ProtectingBallsLevel::insert_initial_points(Deadline& deadline, RefinementS
   CGAL::spatial_sort(order.begin(), order.end(), SortTraits(CGAL::make_property_map(points)));
 
   std::vector<Vertex_handle> vertex(balls.size());
-  std::size_t shared = 0;  // balls equal to an earlier one (coincident features)
+  shared = 0;
   Cell_handle hint;
   for (const std::size_t k : order) {
     deadline.check(256);
     const Ball& b = balls[k];
     const Weighted_point wp(points[k], b.radius * b.radius);
-    const Vertex_handle v = tr_.insert(wp, hint);
+    const Vertex_handle v = tr.insert(wp, hint);
     if (v != Vertex_handle() && v->info().dim != FeatureDim::kVolume && v->point() == wp) {
       // Features closer than anything the planner can separate (edges of
       // touching solids left unmerged) share the vertex: the planner made
@@ -95,6 +119,18 @@ void ProtectingBallsLevel::insert_initial_points(Deadline& deadline, RefinementS
     hint = v->cell();
     vertex[k] = v;
   }
+  return vertex;
+}
+
+}  // namespace
+
+void ProtectingBallsLevel::insert_initial_points(Deadline& deadline, RefinementStats& stats) {
+  std::vector<CurveState>& curves = curves_.curves();
+  std::vector<std::size_t> first_ball;
+  const std::vector<Ball> balls = gather_balls(plan_, curves_.corners(), curves, first_ball);
+  std::size_t shared = 0;  // balls equal to an earlier one (coincident features)
+  const std::vector<Vertex_handle> vertex = insert_balls(tr_, balls, deadline, shared);
+  // Each curve's samples are its balls' vertices, ends included (D|L).
   for (std::size_t j = 0; j < curves.size(); ++j) {
     CurveState& c = curves[j];
     const std::vector<BallSample>& s = plan_.curves[j].samples;
@@ -174,7 +210,7 @@ bool ProtectingBallsLevel::ball_conflict(Cell_handle c, int i) {
     // The surface center is on the sphere of the facet's orthoball, so it lies
     // near or in this ball only when the ball reaches the patch (an early,
     // coarse facet far from the ball is refined as usual).
-    if (squared_norm(center - to_point3(v->point())) > 1.5 * w) continue;
+    if (squared_norm(center - to_point3(v->point())) > kConflictReach * w) continue;
     add_conflict(ball_of(v->info()));
     return true;
   }
@@ -227,7 +263,8 @@ void ProtectingBallsLevel::overlap_conflict(Cell_handle c, int i) {
       if (dist >= need) continue;
       // Down to disjoint at once (B2 for related balls), rather than by halves.
       pairs[n] = ball_a, pairs[n + 1] = ball_b;
-      pairs[n].factor = pairs[n + 1].factor = std::min(0.5, 0.95 * dist / need);
+      pairs[n].factor = pairs[n + 1].factor =
+          std::min(kMaxShrinkFactor, kDisjointMargin * dist / need);
       n += 2;
     }
   }
@@ -240,7 +277,7 @@ void ProtectingBallsLevel::overlap_conflict(Cell_handle c, int i) {
   const double len = norm(normal);
   if (!(len > 0)) return;
   const Point3 g = (1.0 / 3) * (p[0] + p[1] + p[2]);
-  const Point3 reach = (1.5 * criteria_.facet_distance(g) / len) * normal;
+  const Point3 reach = (kSurfaceSearchReach * criteria_.facet_distance(g) / len) * normal;
   if (oracle_.intersect(g - reach, g + reach)) return;
   for (int k = 0; k < n; ++k) add_conflict(pairs[k]);
 }

@@ -51,15 +51,46 @@ Refiner::Refiner(const DomainOracle& oracle, const Criteria& criteria, const Mes
 }
 
 void Refiner::insert_initial_points() {
+  // 1. The features: corners and curve samples, or the protecting balls.
   curve_level_->insert_initial_points(deadline_, stats_);
-  Cell_handle hint;
-  std::size_t offered = 0, kept_out = 0;  // patch points, and those the curves kept out
+  // 2. At least three points on every patch, outside what the curves keep out.
+  const PatchPoints patch_points = insert_patch_points();
+  // 3. A volume to refine, or an error saying why there is none.
+  if (tr_.dimension() < 3 && options_.surface_only) lift_flat_surface(patch_points.hint);
+  if (tr_.dimension() < 3 && patch_points.kept_out > 0) {
+    // A size so large that the curves' protecting balls (or, with R1/R2, the
+    // keep-out around their samples) hold the patches' initial points: a lens
+    // at --size 5 keeps three balls on its rim and nothing else.
+    throw InputError("the sizes are too large for this domain: the " +
+                     curve_level_->keep_out_reason() + std::to_string(patch_points.kept_out) +
+                     " of the " + std::to_string(patch_points.offered) +
+                     " initial points of the patches, and what is left spans no volume: "
+                     "give a smaller size");
+  }
+  if (tr_.dimension() < 3) {
+    throw OracleError("the oracle's initial points span no volume (" +
+                      std::to_string(stats_.initial_points) + " points): cannot start refinement");
+  }
+  // 4. The restricted complex of P_0, and the levels' first queues.
+  complex_.init_unstamped_cells();
+  for (auto c = tr_.all_cells_begin(); c != tr_.all_cells_end(); ++c) {
+    for (int i = 0; i < 4; ++i) {
+      if (c->neighbor(i)->info().stamp > c->info().stamp) update_facet(c, i);
+    }
+    cells_.consider(c);
+  }
+  curve_level_->queue_initial_arcs();
+}
+
+Refiner::PatchPoints Refiner::insert_patch_points() {
+  PatchPoints count;
+  Cell_handle& hint = count.hint;
   for (const PatchInfo& patch : oracle_.patches()) {
     for (const Point3& p : oracle_.initial_points(patch.id)) {
       deadline_.check(256);
-      ++offered;
+      ++count.offered;
       if (curve_level_->keeps_out(p, hint)) {
-        ++kept_out;
+        ++count.kept_out;
         continue;
       }
       const Vertex_handle v = tr_.insert(to_weighted(p), hint);
@@ -70,40 +101,20 @@ void Refiner::insert_initial_points() {
       ++stats_.initial_points;
     }
   }
-  if (tr_.dimension() < 3 && options_.surface_only) {
-    // A flat surface: the corners of a box well around the domain give the
-    // triangulation its third dimension. Far from the surface, their Voronoi
-    // cells leave it as soon as it is sampled (R3 removes them from D|S).
-    const Box3 box = oracle_.bounding_box();
-    const Point3 c = box.center();
-    const double r = box.diagonal();
-    for (int k = 0; k < 8; ++k) {
-      const Point3 p{c.x + (k & 1 ? r : -r), c.y + (k & 2 ? r : -r), c.z + (k & 4 ? r : -r)};
-      hint = tr_.insert(to_weighted(p), hint)->cell();
-    }
+  return count;
+}
+
+void Refiner::lift_flat_surface(Cell_handle hint) {
+  // A flat surface: the corners of a box well around the domain give the
+  // triangulation its third dimension. Far from the surface, their Voronoi
+  // cells leave it as soon as it is sampled (R3 removes them from D|S).
+  const Box3 box = oracle_.bounding_box();
+  const Point3 c = box.center();
+  const double r = box.diagonal();
+  for (int k = 0; k < 8; ++k) {
+    const Point3 p{c.x + (k & 1 ? r : -r), c.y + (k & 2 ? r : -r), c.z + (k & 4 ? r : -r)};
+    hint = tr_.insert(to_weighted(p), hint)->cell();
   }
-  if (tr_.dimension() < 3 && kept_out > 0) {
-    // A size so large that the curves' protecting balls (or, with R1/R2, the
-    // keep-out around their samples) hold the patches' initial points: a lens
-    // at --size 5 keeps three balls on its rim and nothing else.
-    throw InputError("the sizes are too large for this domain: the " +
-                     curve_level_->keep_out_reason() + std::to_string(kept_out) + " of the " +
-                     std::to_string(offered) +
-                     " initial points of the patches, and what is left spans no volume: "
-                     "give a smaller size");
-  }
-  if (tr_.dimension() < 3) {
-    throw OracleError("the oracle's initial points span no volume (" +
-                      std::to_string(stats_.initial_points) + " points): cannot start refinement");
-  }
-  complex_.init_unstamped_cells();
-  for (auto c = tr_.all_cells_begin(); c != tr_.all_cells_end(); ++c) {
-    for (int i = 0; i < 4; ++i) {
-      if (c->neighbor(i)->info().stamp > c->info().stamp) update_facet(c, i);
-    }
-    cells_.consider(c);
-  }
-  curve_level_->queue_initial_arcs();
 }
 
 void Refiner::refine(bool stop_on_conflict) {

@@ -69,6 +69,16 @@ class Refiner final : private InsertionObserver {
   Triangulation& triangulation() { return complex_.triangulation(); }
 
  private:
+  struct PatchPoints {
+    std::size_t offered = 0;   ///< initial points of the patches
+    std::size_t kept_out = 0;  ///< those the curve level kept out
+    Cell_handle hint;          ///< near the last point inserted
+  };
+  /// P_0's points on the patches (DomainOracle::initial_points).
+  PatchPoints insert_patch_points();
+  /// Surface only, a flat surface: eight far points give D(P) its third dimension.
+  void lift_flat_surface(Cell_handle hint);
+
   // InsertionObserver.
   void zone_found(const std::vector<Cell_handle>& zone) override;
   /// The new cells get their labels, their facets' restricted status and their
