@@ -40,12 +40,7 @@ TEST(CellLevel, ADelaunayBallLargerThanTheCellSizeViolatesR51) {
   Criteria criteria = test::lenient_criteria();
   criteria.cell_size = ScalarField::uniform(0.5);
   const CellLevel level(tiny.complex, criteria);
-  const Triangulation& tr = tiny.complex.triangulation();
-  for (auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c) {
-    const Violation v = level.violation(c);
-    EXPECT_EQ(v.rule, Rule::kR5Size);
-    EXPECT_NEAR(v.priority, kSquaredRadius / 0.25, 1e-12);
-  }
+  test::expect_all(tiny.violations(level), Rule::kR5Size, kSquaredRadius / 0.25, 1e-12);
 }
 
 TEST(CellLevel, ARadiusEdgeRatioAboveTheBoundViolatesR52) {
@@ -53,20 +48,10 @@ TEST(CellLevel, ARadiusEdgeRatioAboveTheBoundViolatesR52) {
   test::TinyComplex tiny(true);
   Criteria criteria = test::lenient_criteria();
   criteria.cell_radius_edge = 0.87;
-  const Triangulation& tr = tiny.complex.triangulation();
-  {
-    const CellLevel level(tiny.complex, criteria);
-    for (auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c) {
-      EXPECT_FALSE(level.violation(c));
-    }
-  }
+  test::expect_all(tiny.violations(CellLevel(tiny.complex, criteria)), Rule::kNone, 0, 0);
   criteria.cell_radius_edge = 0.8;
-  const CellLevel level(tiny.complex, criteria);
-  for (auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c) {
-    const Violation v = level.violation(c);
-    EXPECT_EQ(v.rule, Rule::kR5Shape);
-    EXPECT_NEAR(v.priority, kSquaredRadius / 0.64, 1e-12);
-  }
+  test::expect_all(tiny.violations(CellLevel(tiny.complex, criteria)), Rule::kR5Shape,
+                   kSquaredRadius / 0.64, 1e-12);
 }
 
 TEST(CellLevel, BothRulesReportTheWorse) {
@@ -75,14 +60,9 @@ TEST(CellLevel, BothRulesReportTheWorse) {
   criteria.cell_radius_edge = 0.8;                 // ratio 1.17
   criteria.cell_size = ScalarField::uniform(0.5);  // ratio 3
   const CellLevel level(tiny.complex, criteria);
-  const Triangulation& tr = tiny.complex.triangulation();
-  for (auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c) {
-    EXPECT_EQ(level.violation(c).rule, Rule::kR5Size);
-  }
-  criteria.cell_size = ScalarField::uniform(0.85);  // ratio 1.04
-  for (auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c) {
-    EXPECT_EQ(level.violation(c).rule, Rule::kR5Shape);
-  }
+  test::expect_all(tiny.violations(level), Rule::kR5Size, kSquaredRadius / 0.25, 1e-12);
+  criteria.cell_size = ScalarField::uniform(0.85);  // ratio 1.04, less than the shape's 1.17
+  test::expect_all(tiny.violations(level), Rule::kR5Shape, kSquaredRadius / 0.64, 1e-12);
 }
 
 TEST(CellLevel, TheQueueDropsDestroyedCellsAndCellsNoLongerBad) {

@@ -33,11 +33,7 @@ TEST(FacetLevel, AFacetWithAVertexOffThePatchViolatesR3) {
   test::TinyComplex tiny(false);
   const Criteria criteria = test::lenient_criteria();
   const FacetLevel level(tiny.complex, criteria);
-  for (const auto& [c, i] : tiny.restricted_facets()) {
-    const Violation v = level.violation(c, i);
-    EXPECT_EQ(v.rule, Rule::kR3NotFaithful);
-    EXPECT_EQ(v.priority, kTopologicalPriority);
-  }
+  test::expect_all(tiny.violations(level), Rule::kR3NotFaithful, kTopologicalPriority, 0);
 }
 
 TEST(FacetLevel, FacetsOnThePatchWithinTheCriteriaViolateNothing) {
@@ -61,11 +57,7 @@ TEST(FacetLevel, ASurfaceBallLargerThanTheFacetSizeViolatesR41) {
   Criteria criteria = test::lenient_criteria();
   criteria.facet_size = ScalarField::uniform(0.5);
   const FacetLevel level(tiny.complex, criteria);
-  for (const auto& [c, i] : tiny.restricted_facets()) {
-    const Violation v = level.violation(c, i);
-    EXPECT_EQ(v.rule, Rule::kR4Size);
-    EXPECT_NEAR(v.priority, kBallR2 / 0.25, 1e-7);
-  }
+  test::expect_all(tiny.violations(level), Rule::kR4Size, kBallR2 / 0.25, 1e-7);
 }
 
 TEST(FacetLevel, AFacetAngleBelowTheBoundViolatesR42) {
@@ -74,18 +66,11 @@ TEST(FacetLevel, AFacetAngleBelowTheBoundViolatesR42) {
   test::TinyComplex tiny(true);
   Criteria criteria = test::lenient_criteria();
   criteria.facet_angle_deg = 59;
-  {
-    const FacetLevel level(tiny.complex, criteria);
-    for (const auto& [c, i] : tiny.restricted_facets()) EXPECT_FALSE(level.violation(c, i));
-  }
+  test::expect_all(tiny.violations(FacetLevel(tiny.complex, criteria)), Rule::kNone, 0, 0);
   criteria.facet_angle_deg = 61;
-  const FacetLevel level(tiny.complex, criteria);
   const double s = std::sin(61 * M_PI / 180);
-  for (const auto& [c, i] : tiny.restricted_facets()) {
-    const Violation v = level.violation(c, i);
-    EXPECT_EQ(v.rule, Rule::kR4Shape);
-    EXPECT_NEAR(v.priority, 4 * s * s / 3, 1e-12);
-  }
+  test::expect_all(tiny.violations(FacetLevel(tiny.complex, criteria)), Rule::kR4Shape,
+                   4 * s * s / 3, 1e-12);
 }
 
 TEST(FacetLevel, AFacetFarFromItsBallCentreViolatesTheDistanceAndTheWorstRuleIsReported) {
@@ -94,11 +79,7 @@ TEST(FacetLevel, AFacetFarFromItsBallCentreViolatesTheDistanceAndTheWorstRuleIsR
   criteria.facet_distance = ScalarField::uniform(0.1);
   criteria.facet_size = ScalarField::uniform(0.5);  // R4.1 by 3.4, less than the distance's 17.9
   const FacetLevel level(tiny.complex, criteria);
-  for (const auto& [c, i] : tiny.restricted_facets()) {
-    const Violation v = level.violation(c, i);
-    EXPECT_EQ(v.rule, Rule::kR4Distance);
-    EXPECT_NEAR(v.priority, kDistance2 / 0.01, 1e-6);
-  }
+  test::expect_all(tiny.violations(level), Rule::kR4Distance, kDistance2 / 0.01, 1e-6);
 }
 
 TEST(FacetLevel, TheQueuePopsTheWorstLiveFacetAndDropsDestroyedOnes) {

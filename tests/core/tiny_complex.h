@@ -8,9 +8,13 @@
 // crosses the sphere at that normal, the centre of its surface Delaunay ball.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <utility>
 #include <vector>
 
+#include "level_cells.h"
+#include "level_facets.h"
 #include "restricted_complex.h"
 #include "test_domains.h"
 
@@ -55,6 +59,21 @@ struct TinyComplex {
     return out;
   }
 
+  /// What `level` reports for each facet of D|S, and for each finite cell.
+  std::vector<detail::Violation> violations(const detail::FacetLevel& level) {
+    std::vector<detail::Violation> out;
+    for (const auto& [c, i] : restricted_facets()) out.push_back(level.violation(c, i));
+    return out;
+  }
+  std::vector<detail::Violation> violations(const detail::CellLevel& level) {
+    std::vector<detail::Violation> out;
+    const detail::Triangulation& tr = complex.triangulation();
+    for (auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c) {
+      out.push_back(level.violation(c));
+    }
+    return out;
+  }
+
   ImplicitOracle oracle = unit_sphere();
   detail::RestrictedComplex complex{oracle, /*surface_only=*/false};
 };
@@ -66,6 +85,16 @@ inline Criteria lenient_criteria() {
   c.facet_distance = ScalarField::uniform(10);
   c.facet_angle_deg = 20;
   return c;
+}
+
+/// Every report names `rule`, with `priority` (within `tolerance`).
+inline void expect_all(const std::vector<detail::Violation>& reports, detail::Rule rule,
+                       double priority, double tolerance) {
+  ASSERT_FALSE(reports.empty());
+  for (const detail::Violation& v : reports) {
+    EXPECT_EQ(v.rule, rule);
+    EXPECT_NEAR(v.priority, priority, tolerance);
+  }
 }
 
 }  // namespace rdmesh::test
