@@ -100,7 +100,7 @@ bool cut_hidden_balls(const std::vector<Point3>& centers, std::vector<double>& r
       if (d * d >= 1.001 * (rb * rb - rs * rs)) return;
       // Never below the smaller radius: equal balls hide neither (coincident
       // centres make one vertex, which both features share; see
-      // insert_protecting_balls), whereas a cut below it would make the small
+      // ProtectingBallsLevel::insert_initial_points), whereas a cut below it would make the small
       // ball the larger one, and nearly concentric balls would then take
       // turns cutting each other, round after round.
       const double gentle = std::max(rs, std::sqrt(0.99 * (d * d + rs * rs)));

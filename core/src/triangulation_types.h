@@ -65,7 +65,7 @@ class SurfaceCenters {
 
 /// Per cell: its Delaunay ball, its label in D|O, and the restricted status
 /// of its four facets in D|S. A facet is seen from both incident cells and
-/// both copies are always written together (see Refiner::update_facet).
+/// both copies are always written together (see RestrictedComplex::update_facet).
 struct CellInfo {
   /// Creation stamp, unique over the run; 0 for a cell that was destroyed or
   /// not yet initialized. Queue entries carry the stamp they saw (CGAL
