@@ -48,7 +48,9 @@ TEST(FacetLevel, FacetsOnThePatchWithinTheCriteriaViolateNothing) {
   // A facet not in D|S (an inner one) has no violation either.
   const Cell_handle c = tiny.restricted_facets().front().first;
   for (int i = 0; i < 4; ++i) {
-    if (c->info().facet_patch[i] == 0) EXPECT_FALSE(level.violation(c, i));
+    if (c->info().facet_patch[i] == 0) {
+      EXPECT_FALSE(level.violation(c, i));
+    }
   }
 }
 
