@@ -28,11 +28,11 @@ class BallOracle final : public DomainOracle {
     const Point3 m{1.1 * r_, 1.1 * r_, 1.1 * r_};
     return {c_ - m, c_ + m};
   }
-  SubdomainId locate(const Point3& p) const override {
-    return squared_norm(p - c_) < r_ * r_ ? SubdomainId{1} : kOutside;
+  Located locate(const Point3& p, const std::optional<LocateHint>& = {}) const override {
+    return {squared_norm(p - c_) < r_ * r_ ? SubdomainId{1} : kOutside};
   }
   std::optional<SurfaceHit> intersect(const Point3& a, const Point3& b) const override {
-    if (locate(a) == locate(b)) return std::nullopt;
+    if (locate(a).label == locate(b).label) return std::nullopt;
     // |a + t (b - a) - c|^2 = r^2, the root in [0, 1] (exactly one: labels differ).
     const Point3 d = b - a, m = a - c_;
     const double qa = dot(d, d), qb = 2 * dot(m, d), qc = dot(m, m) - r_ * r_;

@@ -324,7 +324,7 @@ void collect_curves(CadOracle::Model& m, const TopTools_IndexedMapOfShape& patch
     if (v0.IsNull() || v1.IsNull()) continue;
     const bool closed = v0.IsSame(v1);
     const Point3 q0 = to_point(BRep_Tool::Pnt(v0)), q1 = to_point(BRep_Tool::Pnt(v1));
-    const int id = static_cast<int>(m.curves.size()) + 1;
+    const int id = m.features.next_curve_id().value;
     CurveInfo info;
     info.id = CurveId(id);
     info.name = "edge_" + std::to_string(id);
@@ -341,16 +341,14 @@ void collect_curves(CadOracle::Model& m, const TopTools_IndexedMapOfShape& patch
         corner_patches[q].insert(patches.begin(), patches.end());
       }
     }
-    m.curves.push_back(std::make_unique<EdgeCurve>(c, t0, t1, q0, q1, curve_samples(c, t0, t1)));
-    m.curve_infos.push_back(std::move(info));
+    m.features.add_curve(std::move(info),
+                         std::make_unique<EdgeCurve>(c, t0, t1, q0, q1, curve_samples(c, t0, t1)));
   }
   for (int q = 1; q <= vertices.Extent(); ++q) {
-    CornerInfo corner;
-    corner.id = CornerId(q);
-    corner.point = to_point(BRep_Tool::Pnt(TopoDS::Vertex(vertices(q))));
+    CornerInfo& corner =
+        m.features.add_corner(to_point(BRep_Tool::Pnt(TopoDS::Vertex(vertices(q)))));
     for (int c : corner_curves[q]) corner.curves.push_back(CurveId(c));
     for (int p : corner_patches[q]) corner.patches.push_back(PatchId(p));
-    m.corners.push_back(std::move(corner));
   }
 }
 

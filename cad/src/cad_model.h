@@ -25,6 +25,7 @@
 #include "rdmesh/box_tree.h"
 #include "rdmesh/cad_oracle.h"
 #include "rdmesh/errors.h"
+#include "rdmesh/feature_table.h"
 
 class StepData_StepModel;
 
@@ -198,11 +199,9 @@ struct CadOracle::Model {
   std::vector<PatchInfo> patches;
   /// The file's face names and colours, carried to the faces after the fuse.
   std::vector<std::pair<TopoDS_Shape, cad::ShapeStyle>> face_styles;
-  std::vector<std::string> patch_colors;   // index = patch id - 1; "#rrggbb" or ""
-  std::vector<std::vector<Point3>> seeds;  // index = patch id - 1
-  std::vector<CurveInfo> curve_infos;
-  std::vector<std::unique_ptr<cad::EdgeCurve>> curves;
-  std::vector<CornerInfo> corners;
+  std::vector<std::string> patch_colors;  // index = patch id - 1; "#rrggbb" or ""
+  /// The edges' curves, the vertices ending them (corners), each face's seeds.
+  FeatureTable<cad::EdgeCurve> features;
   Box3 box;
   double tolerance = 0;
   std::vector<std::string> log;

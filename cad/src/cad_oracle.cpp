@@ -134,8 +134,9 @@ Box3 CadOracle::bounding_box() const { return model_->box; }
 std::vector<SubdomainInfo> CadOracle::subdomains() const { return model_->subdomains; }
 std::vector<PatchInfo> CadOracle::patches() const { return model_->patches; }
 double CadOracle::tolerance() const { return model_->tolerance; }
-std::vector<CornerInfo> CadOracle::corners() const { return model_->corners; }
-std::vector<CurveInfo> CadOracle::curves() const { return model_->curve_infos; }
+std::vector<CornerInfo> CadOracle::corners() const { return model_->features.corners(); }
+std::vector<CurveInfo> CadOracle::curves() const { return model_->features.curves(); }
+const Curve& CadOracle::curve(CurveId id) const { return model_->features.curve(id); }
 int CadOracle::input_solids() const { return model_->input_solids; }
 const std::vector<std::string>& CadOracle::log() const { return model_->log; }
 const std::vector<std::string>& CadOracle::warnings() const { return model_->warnings; }
@@ -145,16 +146,8 @@ std::string CadOracle::patch_color(PatchId id) const {
   return id.value >= 1 && i < model_->patch_colors.size() ? model_->patch_colors[i] : std::string();
 }
 
-const Curve& CadOracle::curve(CurveId id) const {
-  if (id.value < 1 || id.value > static_cast<int>(model_->curves.size())) {
-    throw OracleError("CAD oracle: no curve " + std::to_string(id.value));
-  }
-  return *model_->curves[id.value - 1];
-}
-
 std::vector<Point3> CadOracle::initial_points(PatchId patch) const {
-  if (patch.value < 1 || patch.value > static_cast<int>(model_->seeds.size())) return {};
-  return model_->seeds[patch.value - 1];
+  return model_->features.initial_points(patch);
 }
 
 std::optional<CadOracle::Crossing> CadOracle::first_crossing(const Point3& a,
@@ -168,41 +161,30 @@ std::optional<CadOracle::Crossing> CadOracle::first_crossing(const Point3& a,
   }
 }
 
-SubdomainId CadOracle::locate(const Point3& p) const {
-  const Model& m = *model_;
-  if (!m.box.contains(p)) return kOutside;
-  const double reach = 2 * m.box.diagonal();
-  try {
-    SubdomainId answer = kOutside;
-    for (const Point3& dir : kRays) {
-      const std::optional<cad::RayHit> h = first_hit(m, serial_, p, p + reach * dir);
-      if (!h) return kOutside;  // the ray leaves the domain without crossing a face
-      answer = side_of_start(m, *h);
-      if (!h->tangent && std::fabs(h->cosine) > 1e-3) return answer;
-    }
-    return answer;  // every ray grazed: keep the last answer
-  } catch (const Standard_Failure& e) {
-    rethrow_occt(e, "locate");
-  }
-}
-
-SubdomainId CadOracle::locate_from(const Point3& p, const Point3& known,
-                                   SubdomainId known_label) const {
-  return locate_across(p, known, known_label).label;
-}
-
-DomainOracle::Located CadOracle::locate_across(const Point3& p, const Point3& known,
-                                               SubdomainId known_label) const {
+Located CadOracle::locate(const Point3& p, const std::optional<LocateHint>& hint) const {
   const Model& m = *model_;
   if (!m.box.contains(p)) return {kOutside, std::nullopt};
   try {
-    // The crossing nearest p on [p, known] is the last one on the way to p.
-    const std::optional<cad::RayHit> h = first_hit(m, serial_, p, known);
-    if (!h) return {known_label, std::nullopt};
-    if (h->tangent || std::fabs(h->cosine) <= 1e-3) return {locate(p), std::nullopt};
-    return {side_of_start(m, *h), SurfaceHit{h->point, m.patches[h->face].id}};
+    if (hint) {
+      // The crossing nearest p on [p, known] is the last one on the way to p.
+      const std::optional<cad::RayHit> h = first_hit(m, serial_, p, hint->point);
+      if (!h) return {hint->label, std::nullopt};
+      if (!h->tangent && std::fabs(h->cosine) > 1e-3) {
+        return {side_of_start(m, *h), SurfaceHit{h->point, m.patches[h->face].id}};
+      }
+      // A grazing crossing: cast the rays as without a hint.
+    }
+    const double reach = 2 * m.box.diagonal();
+    SubdomainId answer = kOutside;
+    for (const Point3& dir : kRays) {
+      const std::optional<cad::RayHit> h = first_hit(m, serial_, p, p + reach * dir);
+      if (!h) return {kOutside, std::nullopt};  // the ray leaves the domain without crossing a face
+      answer = side_of_start(m, *h);
+      if (!h->tangent && std::fabs(h->cosine) > 1e-3) return {answer, std::nullopt};
+    }
+    return {answer, std::nullopt};  // every ray grazed: keep the last answer
   } catch (const Standard_Failure& e) {
-    rethrow_occt(e, "locate_from");
+    rethrow_occt(e, "locate");
   }
 }
 
@@ -222,13 +204,13 @@ std::optional<SurfaceHit> CadOracle::intersect(const Point3& a, const Point3& b)
     rethrow_occt(e, "intersect");
   }
   // No transversal crossing found (a grazing segment, an edge): bracket the label change.
-  const SubdomainId la = locate(ca), lb = locate(c->b);
+  const SubdomainId la = locate(ca).label, lb = locate(c->b).label;
   if (la == lb) return std::nullopt;
   double lo = 0, hi = 1;
   SubdomainId lhi = lb;
   for (int it = 0; it < 200 && (hi - lo) * len > m.tolerance; ++it) {
     const double mid = 0.5 * (lo + hi);
-    const SubdomainId l = locate(ca + mid * d);
+    const SubdomainId l = locate(ca + mid * d).label;
     if (l == la) {
       lo = mid;
     } else {

@@ -252,9 +252,8 @@ CadReference::CellCheck CadReference::check_cells_near_pcurves(int per_face, uns
 CadReference::CurveCheck CadReference::check_curves(int per_curve) {
   const CadOracle::Model& m = *impl_->model;
   CurveCheck out;
-  for (std::size_t j = 0; j < m.curves.size(); ++j) {
-    const cad::EdgeCurve& c = *m.curves[j];
-    const CurveInfo& info = m.curve_infos[j];
+  for (const CurveInfo& info : m.features.curves()) {
+    const cad::EdgeCurve& c = m.features.curve(info.id);
     ++out.curves;
     if (c.cached()) ++out.cached_curves;
     const double t0 = info.t_begin, t1 = info.t_end;

@@ -75,7 +75,7 @@ std::vector<Point3> from_grid(const FacePatch& f) {
 }  // namespace
 
 void compute_seeds(CadOracle::Model& m) {
-  m.seeds.assign(m.faces.size(), {});
+  m.features.set_patch_count(m.faces.size());
   const std::size_t max_seeds =
       std::max(kMaxSeeds, kModelSeeds / std::max<std::size_t>(1, m.faces.size()));
   int thin = 0;
@@ -86,7 +86,7 @@ void compute_seeds(CadOracle::Model& m) {
       pts.insert(pts.end(), more.begin(), more.end());
     }
     if (pts.size() < 3) ++thin;
-    m.seeds[i] = std::move(pts);
+    m.features.add_initial_points(PatchId(static_cast<int>(i) + 1), pts);
   }
   if (thin > 0) {
     m.log.push_back(std::to_string(thin) + " face(s) with fewer than 3 initial points");

@@ -73,7 +73,7 @@ std::optional<double> CadOracle::curved_thickness(PatchId id) const {
   // OpenCASCADE's slow intersection path, for minutes in all.
   const Stopwatch clock;
   try {
-    for (const Point3& s : m.seeds[static_cast<std::size_t>(id.value) - 1]) {
+    for (const Point3& s : m.features.initial_points(id)) {
       if (clock.seconds() > kThicknessSeconds) {
         throw InputError("face " + std::to_string(id.value) +
                          ": measuring the material behind it took over " +

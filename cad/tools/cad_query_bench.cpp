@@ -185,7 +185,7 @@ int main(int argc, char** argv) {
       const double ti = std::chrono::duration<double>(Clock::now() - start).count();
       start = Clock::now();
       for (const Point3& p : q.points) {
-        const int label = oracle->locate(p).value;
+        const int label = oracle->locate(p).label.value;
         if (out) std::fprintf(out, "L %d %d\n", done_l, label);
         ++done_l;
         if (std::chrono::duration<double>(Clock::now() - start).count() > seconds) break;

@@ -93,7 +93,7 @@ ScalarField lowered(const ScalarField& base, std::shared_ptr<const GradedField> 
   return ScalarField{0.0, [base, near, inside, oracle](const Point3& p) {
                        double h = near->below(p, base(p));
                        if (inside && !inside->empty()) {
-                         const int label = oracle->locate(p).value;
+                         const int label = oracle->locate(p).label.value;
                          for (const auto& [id, size] : *inside) {
                            if (id == label) h = std::min(h, size);
                          }

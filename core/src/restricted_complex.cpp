@@ -74,13 +74,13 @@ void RestrictedComplex::init_cell(Cell_handle c, Cell_handle from) {
   const bool known = from != Cell_handle() && from->info().stamp != 0 && !tr_.is_infinite(from) &&
                      is_finite(from->info().circumcenter);
   if (!known) {
-    info.label = oracle_.locate(info.circumcenter).value;
+    info.label = oracle_.locate(info.circumcenter).label.value;
     return;
   }
   // [circumcenter, from's] is the dual edge of the facet between the two
   // cells: a crossing found on it serves that facet too (update_facet()).
-  const DomainOracle::Located l = oracle_.locate_across(
-      info.circumcenter, from->info().circumcenter, SubdomainId{from->info().label});
+  const Located l = oracle_.locate(
+      info.circumcenter, LocateHint{from->info().circumcenter, SubdomainId{from->info().label}});
   info.label = l.label.value;
   if (l.crossing && l.label.value != from->info().label) {
     const int i = c->index(from);

@@ -35,7 +35,7 @@ class RestrictedComplex {
 
   /// Stamps c and computes its orthocenter and label. `from`, when it is a
   /// labeled finite neighbor, lets the oracle label c by a short walk from
-  /// its center (DomainOracle::locate_from) instead of locating from scratch.
+  /// its center (DomainOracle::locate with a hint) instead of locating from scratch.
   void init_cell(Cell_handle c, Cell_handle from = Cell_handle());
   /// Initializes every cell not stamped yet (after the initial points):
   /// labels spread from cell to neighboring cell, the first cell of each

@@ -81,7 +81,7 @@ void check_domain_inside_box(const DomainOracle& oracle) {
           c[u] = i == n ? hi[u] : lo[u] + (hi[u] - lo[u]) * i / n;
           c[v] = j == n ? hi[v] : lo[v] + (hi[v] - lo[v]) * j / n;
           const Point3 p{c[0], c[1], c[2]};
-          const SubdomainId s = oracle.locate(p);
+          const SubdomainId s = oracle.locate(p).label;
           if (s == kOutside) continue;
           std::string name = std::to_string(s.value);
           for (const SubdomainInfo& info : oracle.subdomains()) {

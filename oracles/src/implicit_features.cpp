@@ -150,7 +150,7 @@ std::vector<PatchId> ImplicitOracle::patches_around(const Curve& curve, double t
     for (int d = 0; d < kProbeDirections; ++d) {
       const double angle = 2 * 3.141592653589793 * d / kProbeDirections;
       probes[d] = x + (radius * std::cos(angle)) * u + (radius * std::sin(angle)) * w;
-      labels[d] = locate(probes[d]).value;
+      labels[d] = locate(probes[d]).label.value;
       several = several || labels[d] != labels[0];
     }
     if (!several) {
@@ -209,11 +209,10 @@ void ImplicitOracle::build_features(std::vector<CurveSpec> specs) {
 
   // Corners of open pieces, merged, ids in order of first appearance.
   auto corner_at = [&](const Point3& p) {
-    for (const CornerInfo& c : corner_infos_) {
+    for (const CornerInfo& c : features_.corners()) {
       if (distance(c.point, p) <= merge) return c;
     }
-    corner_infos_.push_back({CornerId(static_cast<int>(corner_infos_.size()) + 1), p, {}, {}});
-    return corner_infos_.back();
+    return features_.add_corner(p);
   };
   for (Declared& d : curves) {
     // Sorted split parameters, distinct points, none at a closed curve's seam twice.
@@ -239,7 +238,7 @@ void ImplicitOracle::build_features(std::vector<CurveSpec> specs) {
     if (closed_piece) ranges.push_back({d.t0, d.t1});
     for (std::size_t k = 0; k < ranges.size(); ++k) {
       const auto [a, b] = ranges[k];
-      const CurveId id(static_cast<int>(curve_infos_.size()) + 1);
+      const CurveId id = features_.next_curve_id();
       CurveInfo info{id,
                      ranges.size() == 1 ? d.name : d.name + "#" + std::to_string(k + 1),
                      closed_piece,
@@ -256,32 +255,23 @@ void ImplicitOracle::build_features(std::vector<CurveSpec> specs) {
         const CornerInfo ce = corner_at(end);
         info.start = cs.id, info.end = ce.id, start = cs.point, end = ce.point;
       }
-      auto piece = std::make_shared<detail::CurvePiece>(d.curve, d.t0, d.t1, a, b, start, end);
+      auto piece = std::make_unique<detail::CurvePiece>(d.curve, d.t0, d.t1, a, b, start, end);
       info.patches = patches_around(*piece, a, b, info.name);
-      curve_pieces_.push_back(std::move(piece));
-      curve_infos_.push_back(std::move(info));
+      features_.add_curve(std::move(info), std::move(piece));
     }
   }
-  for (const CurveInfo& c : curve_infos_) {
+  for (const CurveInfo& c : features_.curves()) {
     if (c.closed) continue;
     for (CornerId corner : {c.start, c.end}) {
-      CornerInfo& q = corner_infos_[corner.value - 1];
+      CornerInfo& q = features_.corner(corner);
       if (q.curves.empty() || q.curves.back() != c.id) q.curves.push_back(c.id);
       q.patches.insert(q.patches.end(), c.patches.begin(), c.patches.end());
     }
   }
-  for (CornerInfo& q : corner_infos_) {
+  for (CornerInfo& q : features_.corners()) {
     std::sort(q.patches.begin(), q.patches.end());
     q.patches.erase(std::unique(q.patches.begin(), q.patches.end()), q.patches.end());
   }
-}
-
-const Curve& ImplicitOracle::curve(CurveId id) const {
-  if (id.value < 1 || id.value > static_cast<int>(curve_pieces_.size())) {
-    throw OracleError("implicit domain has no curve " + std::to_string(id.value) + " (curves 1.." +
-                      std::to_string(curve_pieces_.size()) + ")");
-  }
-  return *curve_pieces_[id.value - 1];
 }
 
 }  // namespace rdmesh

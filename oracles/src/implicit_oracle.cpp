@@ -105,10 +105,10 @@ int ImplicitOracle::label_of(std::uint64_t state) const {
   return 0;
 }
 
-SubdomainId ImplicitOracle::locate(const Point3& p) const {
-  if (!box_.contains(p)) return kOutside;
+Located ImplicitOracle::locate(const Point3& p, const std::optional<LocateHint>&) const {
+  if (!box_.contains(p)) return {kOutside, std::nullopt};
   std::array<double, 64> values;
-  return SubdomainId(label_of(state_at(p, values.data())));
+  return {SubdomainId(label_of(state_at(p, values.data()))), std::nullopt};
 }
 
 PatchId ImplicitOracle::patch_between(SubdomainId sa, SubdomainId sb) const {
@@ -188,11 +188,6 @@ std::optional<SurfaceHit> ImplicitOracle::intersect(const Point3& a, const Point
   const std::uint64_t changed = (ss ^ st) & ~kInBox;
   const int k = changed ? std::countr_zero(changed) : static_cast<int>(functions_.size());
   return SurfaceHit{a + (0.5 * (ts + tt)) * dir, patch_of_key(patch_key(ls, lt, k))};
-}
-
-std::vector<Point3> ImplicitOracle::initial_points(PatchId patch) const {
-  if (patch.value <= 0 || patch.value >= static_cast<int>(initial_points_.size())) return {};
-  return initial_points_[patch.value];
 }
 
 Point3 ImplicitOracle::gradient(int k, const Point3& p) const {

@@ -49,7 +49,7 @@ std::optional<Point3> ImplicitOracle::project_on_function(const Point3& p, int k
   const double nn = norm(n);
   if (!(nn > 0)) return std::nullopt;
   const double probe = 100 * tolerance_ / nn;
-  const int l1 = locate(*q - probe * n).value, l2 = locate(*q + probe * n).value;
+  const int l1 = locate(*q - probe * n).label.value, l2 = locate(*q + probe * n).label.value;
   if (std::min(l1, l2) != a || std::max(l1, l2) != b) return std::nullopt;
   return q;
 }
@@ -123,7 +123,7 @@ std::optional<Point3> ImplicitOracle::project_on_crease(const Point3& p, int k, 
   bool seen_a = false, seen_b = false;
   for (double su : {-1.0, 1.0}) {
     for (double sw : {-1.0, 1.0}) {
-      const int label = locate(*q + (probe * su) * u + (probe * sw) * w).value;
+      const int label = locate(*q + (probe * su) * u + (probe * sw) * w).label.value;
       seen_a = seen_a || label == a;
       seen_b = seen_b || label == b;
     }

@@ -130,7 +130,8 @@ void ImplicitOracle::sample_box() {
     for (int j = 0; j < m; ++j) {
       for (int i = 0; i < m; ++i) {
         const int node = node_index(i, j, k);
-        const int l = states.empty() ? locate(node_point(i, j, k)).value : label_of(states[node]);
+        const int l =
+            states.empty() ? locate(node_point(i, j, k)).label.value : label_of(states[node]);
         labels[node] = l;
         ++count[l];
       }
@@ -220,11 +221,10 @@ void ImplicitOracle::sample_box() {
     if (!found[key]) patch_of_key_[key] = listed + 1 + key;
   }
   for (Crossing& c : crossings) c.patch = patch_of_key_[c.patch - 1];
-  initial_points_.assign(listed + 1, {});
+  features_.set_patch_count(static_cast<std::size_t>(listed));
   const Point3 spacing = (1.0 / cells) * (box_.hi - box_.lo);
   for (const std::vector<int>& comp : members) {
     const int patch = crossings[comp.front()].patch;
-    std::vector<Point3>& out = initial_points_[patch];
     std::vector<Point3> points;
     const int count = std::clamp(static_cast<int>(comp.size()) / kCrossingsPerPoint,
                                  kPointsPerComponent, kMaxPointsPerComponent);
@@ -256,15 +256,14 @@ void ImplicitOracle::sample_box() {
         }
       }
     }
-    out.insert(out.end(), points.begin(), points.end());
+    features_.add_initial_points(PatchId(patch), points);
   }
   // A domain far smaller than the grid's cells (a sphere of radius 1e-160,
   // found by fuzz/cli_campaign.py) shows its surface as one point: refinement
   // cannot start from fewer than four.
   // (A domain that reaches the box is refused with its own reason later:
   // domain_file_limits.h.)
-  std::size_t seeds = 0;
-  for (const std::vector<Point3>& points : initial_points_) seeds += points.size();
+  const std::size_t seeds = features_.initial_point_count();
   bool reaches_box = false;
   for (int k = 0; k < m && !reaches_box; ++k) {
     for (int j = 0; j < m && !reaches_box; ++j) {

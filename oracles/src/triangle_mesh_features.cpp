@@ -122,38 +122,37 @@ void TriangleMeshOracle::build_features(const std::vector<std::array<int, 3>>& n
   std::vector<int> corner_of(nv, 0);
   for (int v = 0; v < nv; ++v) {
     if (!is_corner[v]) continue;
-    corner_of[v] = static_cast<int>(corner_infos_.size()) + 1;
-    corner_infos_.push_back({CornerId(corner_of[v]), mesh_.points[v], {}, {}});
+    corner_of[v] = features_.add_corner(mesh_.points[v]).id.value;
   }
   auto add_curve = [&](const Walk& w, bool closed) {
     std::vector<Point3> points;
     for (int v : w.vertices) points.push_back(mesh_.points[v]);
-    curves_.push_back(std::make_unique<PolylineCurve>(std::move(points)));
+    auto queries = std::make_unique<PolylineCurve>(std::move(points));
     const SharpEdge& e = edges[w.first_edge];
     std::vector<PatchId> patches = {triangle_patch_[e.left], triangle_patch_[e.right]};
     std::sort(patches.begin(), patches.end());
     patches.erase(std::unique(patches.begin(), patches.end()), patches.end());
     CurveInfo info;
-    info.id = CurveId(static_cast<int>(curve_infos_.size()) + 1);
+    info.id = features_.next_curve_id();
     info.name = "curve_" + std::to_string(info.id.value);
     info.closed = closed;
-    info.t_begin = curves_.back()->t_begin();
-    info.t_end = curves_.back()->t_end();
+    info.t_begin = queries->t_begin();
+    info.t_end = queries->t_end();
     info.start = CornerId(closed ? 0 : corner_of[w.vertices.front()]);
     info.end = CornerId(closed ? 0 : corner_of[w.vertices.back()]);
     info.patches = patches;
     if (!closed) {
       for (CornerId c : {info.start, info.end}) {
-        CornerInfo& corner = corner_infos_[c.value - 1];
+        CornerInfo& corner = features_.corner(c);
         corner.curves.push_back(info.id);
         corner.patches.insert(corner.patches.end(), patches.begin(), patches.end());
       }
     }
-    curve_infos_.push_back(std::move(info));
+    features_.add_curve(std::move(info), std::move(queries));
   };
   for (const Walk& w : open) add_curve(w, false);
   for (const Walk& w : loops) add_curve(w, true);
-  for (CornerInfo& c : corner_infos_) {
+  for (CornerInfo& c : features_.corners()) {
     for (auto* list : {&c.patches}) {
       std::sort(list->begin(), list->end());
       list->erase(std::unique(list->begin(), list->end()), list->end());

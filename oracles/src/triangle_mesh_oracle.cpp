@@ -128,11 +128,13 @@ void TriangleMeshOracle::build_patches(const std::vector<std::array<int, 3>>& ne
                             SubdomainId(std::max(outer, inner))});
     patch_triangles_.push_back(std::move(members));
   }
+  features_.set_patch_count(patch_triangles_.size());
+  for (std::size_t i = 0; i < patch_triangles_.size(); ++i) {
+    features_.add_initial_points(PatchId(static_cast<int>(i) + 1), points_on(patch_triangles_[i]));
+  }
 }
 
-std::vector<Point3> TriangleMeshOracle::initial_points(PatchId patch) const {
-  if (patch.value < 1 || patch.value > static_cast<int>(patch_triangles_.size())) return {};
-  const std::vector<int>& tris = patch_triangles_[patch.value - 1];
+std::vector<Point3> TriangleMeshOracle::points_on(const std::vector<int>& tris) const {
   std::vector<Point3> points;
   const std::size_t count = std::min<std::size_t>(8, tris.size());
   for (std::size_t i = 0; i < count; ++i) {
@@ -145,13 +147,6 @@ std::vector<Point3> TriangleMeshOracle::initial_points(PatchId patch) const {
     }
   }
   return points;
-}
-
-const Curve& TriangleMeshOracle::curve(CurveId id) const {
-  if (id.value < 1 || id.value > static_cast<int>(curves_.size())) {
-    throw OracleError("triangle mesh oracle: unknown curve id " + std::to_string(id.value));
-  }
-  return *curves_[id.value - 1];
 }
 
 }  // namespace rdmesh

@@ -92,8 +92,12 @@ int TriangleMeshOracle::innermost(const unsigned char* inside) const {
   return best;
 }
 
-SubdomainId TriangleMeshOracle::locate(const Point3& p) const {
-  if (options_.surface_only || !mesh_box_.contains(p)) return kOutside;
+Located TriangleMeshOracle::locate(const Point3& p, const std::optional<LocateHint>& hint) const {
+  if (options_.surface_only || !mesh_box_.contains(p)) return {kOutside, std::nullopt};
+  if (hint) {
+    const std::optional<SubdomainId> walked = walk(p, *hint);
+    if (walked) return {*walked, std::nullopt};
+  }
   unsigned char inside[kMaxComponents];
   // First the direction that leaves the box soonest.
   const double gaps[6] = {mesh_box_.hi.x - p.x, p.x - mesh_box_.lo.x, mesh_box_.hi.y - p.y,
@@ -106,22 +110,21 @@ SubdomainId TriangleMeshOracle::locate(const Point3& p) const {
   for (int i = 0; i < 12 && !ok; ++i)
     ok = ray_parity(p, i == 0 ? first : (first + i) % 12, -1, false, inside);
   if (!ok) ray_parity(p, first, -1, true, inside);
-  return SubdomainId(innermost(inside) + 1);
+  return {SubdomainId(innermost(inside) + 1), std::nullopt};
 }
 
-SubdomainId TriangleMeshOracle::locate_from(const Point3& p, const Point3& known,
-                                            SubdomainId known_label) const {
-  if (options_.surface_only || !mesh_box_.contains(p)) return kOutside;
+std::optional<SubdomainId> TriangleMeshOracle::walk(const Point3& p, const LocateHint& hint) const {
   const int count = static_cast<int>(component_volume_.size());
-  if (!mesh_box_.contains(known) || known_label.value < 0 || known_label.value > count) {
-    return locate(p);
+  if (!mesh_box_.contains(hint.point) || hint.label.value < 0 || hint.label.value > count) {
+    return std::nullopt;
   }
-  // Components never touch, so the ones containing `known` are its innermost
-  // one and that one's ancestors; each crossing of [known, p] flips one.
+  // Components never touch, so the ones containing the hint's point are its
+  // innermost one and that one's ancestors; each crossing of [p, hint] flips one.
   unsigned char inside[kMaxComponents];
   std::memset(inside, 0, count);
-  for (int c = known_label.value - 1; c >= 0; c = component_parent_[c]) inside[c] = 1;
-  if (!flip_crossings(p, known, -1, false, inside)) return locate(p);  // an edge or a vertex
+  for (int c = hint.label.value - 1; c >= 0; c = component_parent_[c]) inside[c] = 1;
+  if (!flip_crossings(p, hint.point, -1, false, inside))
+    return std::nullopt;  // an edge or a vertex
   return SubdomainId(innermost(inside) + 1);
 }
 

@@ -10,11 +10,6 @@ namespace py = pybind11;
 
 namespace rdmesh::python {
 
-const Curve& PyOracleBase::curve(CurveId id) const {
-  throw OracleError("a Python oracle has no curves (asked for curve " + std::to_string(id.value) +
-                    ")");
-}
-
 namespace {
 
 Point3 to_point(const py::handle& h, const char* what) {
@@ -44,8 +39,9 @@ class Trampoline final : public PyOracleBase {
     return *box_;
   }
 
-  SubdomainId locate(const Point3& p) const override {
-    return SubdomainId(call("locate", from_point(p)).cast<int>());
+  /// Python's locate(p) has no hint: the refiner's walks cost one call each anyway.
+  Located locate(const Point3& p, const std::optional<LocateHint>& = std::nullopt) const override {
+    return {SubdomainId(call("locate", from_point(p)).cast<int>()), std::nullopt};
   }
 
   std::optional<SurfaceHit> intersect(const Point3& a, const Point3& b) const override {

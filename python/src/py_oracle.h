@@ -16,12 +16,8 @@
 
 namespace rdmesh::python {
 
-class PyOracleBase : public DomainOracle {
- public:
-  std::vector<CornerInfo> corners() const override { return {}; }
-  std::vector<CurveInfo> curves() const override { return {}; }
-  const Curve& curve(CurveId id) const override;
-};
+/// The class Python subclasses; smooth (DomainOracle's feature defaults).
+class PyOracleBase : public DomainOracle {};
 
 void bind_oracle(pybind11::module_& m);
 

@@ -149,15 +149,15 @@ TEST_P(SharedStep, PassesOracleConformanceOfSurfaces) {
 // Measured on these 1500 segments: 0 to 2 differ per file, all where the
 // segment or a ray passes through a face's boundary curve (the crossing is ON
 // the face: one side or the other misses it); OpenCASCADE's own rays side with
-// locate_from as often as with locate.
-TEST_P(SharedStep, LocateFromAKnownPointAgreesWithLocate) {
+// the hinted locate as often as with the plain one.
+TEST_P(SharedStep, LocateFromAHintAgreesWithLocate) {
   const auto oracle = load_shared(GetParam());
   if (!oracle) RDMESH_MISSING_SHARED_DATA("step/ files");
   int differ = 0, crossed = 0;
   for (const auto& [a, b] : segments(*oracle, 1500, 23)) {
-    const SubdomainId la = oracle->locate(a), lb = oracle->locate(b);
+    const SubdomainId la = oracle->locate(a).label, lb = oracle->locate(b).label;
     crossed += la != lb;
-    differ += oracle->locate_from(a, b, lb) != la;
+    differ += oracle->locate(a, LocateHint{b, lb}).label != la;
   }
   EXPECT_GT(crossed, 50);
   EXPECT_LE(differ, 3);
@@ -399,7 +399,7 @@ TEST(CadIntersector, AnswersDoNotDependOnQueryHistory) {
                                    c ? c->point.z : 0,
                                    c ? c->distance : -1,
                                    q ? q->x + 2 * q->y + 3 * q->z : 0,
-                                   static_cast<double>(o.locate(b).value)};
+                                   static_cast<double>(o.locate(b).label.value)};
     };
     std::vector<std::array<double, 6>> forward(list.size()), backward(list.size()),
         other(list.size());
@@ -455,7 +455,7 @@ TEST(CadIntersector, ConcurrentCrossingsMatchSerialOnes) {
     for (const auto& [a, b] : list) {
       const auto c = oracle->first_crossing(a, b);
       out.push_back(c ? c->distance + 1000 * c->patch.value : -1.0);
-      out.push_back(oracle->locate(a).value);
+      out.push_back(oracle->locate(a).label.value);
     }
     return out;
   };

@@ -77,9 +77,9 @@ TEST(CadOracle, TwoBoxesShareAnInterfacePatch) {
     if (p.side_a.value == 1 && p.side_b.value == 2) ++interfaces;
   }
   EXPECT_EQ(interfaces, 1);
-  EXPECT_EQ(oracle->locate({5, 5, 5}).value, 1);
-  EXPECT_EQ(oracle->locate({15, 5, 5}).value, 2);
-  EXPECT_EQ(oracle->locate({25, 5, 5}).value, 0);
+  EXPECT_EQ(oracle->locate({5, 5, 5}).label.value, 1);
+  EXPECT_EQ(oracle->locate({15, 5, 5}).label.value, 2);
+  EXPECT_EQ(oracle->locate({25, 5, 5}).label.value, 0);
   const auto hit = oracle->intersect({5, 5, 5}, {15, 5, 5});
   ASSERT_TRUE(hit);
   EXPECT_NEAR(hit->point.x, 10, 1e-9);
@@ -107,7 +107,7 @@ TEST(CadOracle, ConcurrentQueriesMatchSerialOnes) {
   auto answers = [&] {
     std::vector<double> out;
     for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
-      out.push_back(oracle->locate(pts[i]).value);
+      out.push_back(oracle->locate(pts[i]).label.value);
       const auto hit = oracle->intersect(pts[i], pts[i + 1]);
       out.push_back(hit ? hit->point.x + hit->patch.value : -1.0);
     }

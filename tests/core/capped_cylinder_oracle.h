@@ -29,15 +29,15 @@ class CappedCylinderOracle final : public DomainOracle {
     const double m = 0.2 * std::max(r_, h_);
     return {{-r_ - m, -r_ - m, -h_ - m}, {r_ + m, r_ + m, h_ + m}};
   }
-  SubdomainId locate(const Point3& p) const override {
-    return p.x * p.x + p.y * p.y < r_ * r_ && std::abs(p.z) < h_ ? SubdomainId{1} : kOutside;
+  Located locate(const Point3& p, const std::optional<LocateHint>& = std::nullopt) const override {
+    return {p.x * p.x + p.y * p.y < r_ * r_ && std::abs(p.z) < h_ ? SubdomainId{1} : kOutside};
   }
   std::optional<SurfaceHit> intersect(const Point3& a, const Point3& b) const override {
-    if (locate(a) == locate(b)) return std::nullopt;
-    Point3 in = locate(a) == kOutside ? b : a, out = locate(a) == kOutside ? a : b;
+    if (locate(a).label == locate(b).label) return std::nullopt;
+    Point3 in = locate(a).label == kOutside ? b : a, out = locate(a).label == kOutside ? a : b;
     for (int i = 0; i < 200 && distance(in, out) > 1e-13; ++i) {
       const Point3 m = 0.5 * (in + out);
-      (locate(m) == kOutside ? out : in) = m;
+      (locate(m).label == kOutside ? out : in) = m;
     }
     const Point3 x = 0.5 * (in + out);
     return SurfaceHit{x, patch_at(x)};

@@ -139,7 +139,7 @@ void expect_exudation_keeps_the_mesh(
     const auto& q = r.on.mesh.tets[t];
     const auto& v = r.on.mesh.vertices;
     const Point3 g = 0.25 * (v[q[0]] + v[q[1]] + v[q[2]] + v[q[3]]);
-    if (oracle.locate(g) != r.on.mesh.tet_subdomain[t] &&
+    if (oracle.locate(g).label != r.on.mesh.tet_subdomain[t] &&
         distance_to_boundary(g) > criteria.facet_distance.constant)
       ++wrong;
   }

@@ -70,7 +70,7 @@ void expect_labels_match_oracle(const TetMesh& mesh, const DomainOracle& oracle)
     const auto& q = mesh.tets[t];
     const auto& v = mesh.vertices;
     const Point3 c = circumcenter(v[q[0]], v[q[1]], v[q[2]], v[q[3]]);
-    if (oracle.locate(c) != mesh.tet_subdomain[t]) ++mismatches;
+    if (oracle.locate(c).label != mesh.tet_subdomain[t]) ++mismatches;
   }
   // Circumcenters within rounding of the boundary may flip; allow none in practice.
   EXPECT_EQ(mismatches, 0u) << "tets whose label differs from the oracle at the circumcenter";

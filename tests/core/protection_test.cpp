@@ -288,16 +288,15 @@ class RectangleNearby final : public DomainOracle {
     return bounds_it ? limit : std::min(limit, distance_to_rectangle(p));
   }
   Box3 bounding_box() const override { return {{-1, -2, -1}, {11, 2, 1}}; }
-  SubdomainId locate(const Point3&) const override { return kOutside; }
+  Located locate(const Point3&, const std::optional<LocateHint>& = std::nullopt) const override {
+    return {kOutside};
+  }
   std::optional<SurfaceHit> intersect(const Point3&, const Point3&) const override { return {}; }
   std::vector<SubdomainInfo> subdomains() const override { return {}; }
   std::vector<PatchInfo> patches() const override { return {}; }
   std::vector<Point3> initial_points(PatchId) const override { return {}; }
   std::optional<Point3> project(const Point3&, PatchId) const override { return {}; }
   double tolerance() const override { return 1e-12; }
-  std::vector<CornerInfo> corners() const override { return {}; }
-  std::vector<CurveInfo> curves() const override { return {}; }
-  const Curve& curve(CurveId) const override { throw OracleError("no curves here"); }
   mutable int queries = 0;
 };
 

@@ -48,7 +48,7 @@ TEST(RestrictedComplex, IncrementalBookkeepingEqualsARecomputation) {
         EXPECT_EQ(info.label, 0);
       } else {
         ASSERT_LE(norm(center - info.circumcenter), 1e-12 * (1 + norm(center)));
-        EXPECT_EQ(info.label, oracle.locate(info.circumcenter).value);
+        EXPECT_EQ(info.label, oracle.locate(info.circumcenter).label.value);
       }
       labeled += info.label != 0;
     }

@@ -180,8 +180,8 @@ namespace {
 class BlindOracle final : public DomainOracle {
  public:
   Box3 bounding_box() const override { return {{-1, -1, -1}, {1, 1, 1}}; }
-  SubdomainId locate(const Point3& p) const override {
-    return std::abs(p.z) < 1e-3 && bounding_box().contains(p) ? SubdomainId{1} : kOutside;
+  Located locate(const Point3& p, const std::optional<LocateHint>& = std::nullopt) const override {
+    return {std::abs(p.z) < 1e-3 && bounding_box().contains(p) ? SubdomainId{1} : kOutside};
   }
   std::optional<SurfaceHit> intersect(const Point3&, const Point3&) const override {
     return std::nullopt;
@@ -195,9 +195,6 @@ class BlindOracle final : public DomainOracle {
   }
   std::optional<Point3> project(const Point3& p, PatchId) const override { return p; }
   double tolerance() const override { return 1e-12; }
-  std::vector<CornerInfo> corners() const override { return {}; }
-  std::vector<CurveInfo> curves() const override { return {}; }
-  const Curve& curve(CurveId) const override { throw OracleError("no curves"); }
 };
 
 TEST(SmoothDomains, AnEmptyResultIsAnErrorNotASilentEmptyMesh) {

@@ -83,7 +83,9 @@ class FeatureOracle : public DomainOracle {
     }
   }
   Box3 bounding_box() const override { return {{0, 0, 0}, {2 * kS, kS, kS}}; }
-  SubdomainId locate(const Point3&) const override { return kOutside; }
+  Located locate(const Point3&, const std::optional<LocateHint>& = std::nullopt) const override {
+    return {kOutside};
+  }
   std::optional<SurfaceHit> intersect(const Point3&, const Point3&) const override { return {}; }
   std::vector<SubdomainInfo> subdomains() const override { return {}; }
   std::vector<PatchInfo> patches() const override { return {}; }

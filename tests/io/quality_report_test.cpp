@@ -21,15 +21,14 @@ constexpr double kS = 0.1;  // cube edge of the fixture
 class ScriptedOracle : public DomainOracle {
  public:
   Box3 bounding_box() const override { return {{0, 0, 0}, {2 * kS, kS, kS}}; }
-  SubdomainId locate(const Point3&) const override { return kOutside; }
+  Located locate(const Point3&, const std::optional<LocateHint>& = std::nullopt) const override {
+    return {kOutside};
+  }
   std::optional<SurfaceHit> intersect(const Point3&, const Point3&) const override { return {}; }
   std::vector<SubdomainInfo> subdomains() const override { return {}; }
   std::vector<PatchInfo> patches() const override { return {}; }
   std::vector<Point3> initial_points(PatchId) const override { return {}; }
   double tolerance() const override { return 1e-12; }
-  std::vector<CornerInfo> corners() const override { return {}; }
-  std::vector<CurveInfo> curves() const override { return {}; }
-  const Curve& curve(CurveId) const override { throw OracleError("no curves"); }
   std::optional<Point3> project(const Point3& p, PatchId patch) const override {
     ++calls[patch.value];
     if (patch.value == 1) return p + Point3{0, 0, p.x * (kS - p.x)};

@@ -187,7 +187,9 @@ class LiftingOracle : public DomainOracle {
  public:
   explicit LiftingOracle(double lift) : lift_(lift) {}
   Box3 bounding_box() const override { return {{-1, -1, -1}, {2, 2, 2}}; }
-  SubdomainId locate(const Point3&) const override { return SubdomainId(1); }
+  Located locate(const Point3&, const std::optional<LocateHint>& = std::nullopt) const override {
+    return {SubdomainId(1)};
+  }
   std::optional<SurfaceHit> intersect(const Point3&, const Point3&) const override {
     return std::nullopt;
   }
@@ -200,9 +202,6 @@ class LiftingOracle : public DomainOracle {
     return p + Point3{0, 0, lift_};
   }
   double tolerance() const override { return 1e-12; }
-  std::vector<CornerInfo> corners() const override { return {}; }
-  std::vector<CurveInfo> curves() const override { return {}; }
-  const Curve& curve(CurveId) const override { throw OracleError("no curves"); }
 
  private:
   double lift_;

@@ -41,7 +41,7 @@ TEST(ImplicitOracleHotPath, IntersectAndLocateDoNotAllocate) {
   int hits = 0;
   for (std::size_t i = 0; i + 1 < points.size(); ++i) {
     hits += d.oracle->intersect(points[i], points[i + 1]).has_value();
-    hits += d.oracle->locate(points[i]).value > 3;
+    hits += d.oracle->locate(points[i]).label.value > 3;
   }
   EXPECT_EQ(g_allocations.load() - before, 0);
   EXPECT_GT(hits, 100);

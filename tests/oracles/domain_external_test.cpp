@@ -38,7 +38,7 @@ TEST(DomainExternal, SameDomainAsTheExpression) {
   EXPECT_EQ(code.oracle->subdomains()[0].name, "ball");
   for (double t = -1.9; t < 1.9; t += 0.0371) {
     const Point3 p{t, 0.3 * t, -0.2};
-    EXPECT_EQ(code.oracle->locate(p), text.oracle->locate(p));
+    EXPECT_EQ(code.oracle->locate(p).label, text.oracle->locate(p).label);
   }
   const auto hit = code.oracle->intersect({0, 0, 0}, {1.5, 0, 0});
   ASSERT_TRUE(hit.has_value());

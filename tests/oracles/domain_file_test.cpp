@@ -55,7 +55,7 @@ TEST(DomainFile, SamplesHaveTheExpectedStructure) {
   ASSERT_EQ(nested.oracle->subdomains().size(), 2u);
   EXPECT_EQ(nested.oracle->subdomains()[0].name, "shell");
   EXPECT_EQ(nested.oracle->patches().size(), 2u);
-  EXPECT_EQ(nested.oracle->locate({0, 0, 0}), SubdomainId(2));
+  EXPECT_EQ(nested.oracle->locate({0, 0, 0}).label, SubdomainId(2));
   LoadedDomain balls = load_domain_file(kSamples + "balls.json");
   ASSERT_EQ(balls.oracle->patches().size(), 1u);
   EXPECT_GE(balls.oracle->initial_points(balls.oracle->patches()[0].id).size(), 9u);
@@ -75,8 +75,8 @@ TEST(DomainFile, MinimalFileAndHints) {
           // comments are allowed
           "curves": [], "description": "d"})",
       "test.json");
-  EXPECT_EQ(d.oracle->locate({0, 0, 0}), SubdomainId(1));
-  EXPECT_EQ(d.oracle->locate({1.5, 0, 0}), kOutside);
+  EXPECT_EQ(d.oracle->locate({0, 0, 0}).label, SubdomainId(1));
+  EXPECT_EQ(d.oracle->locate({1.5, 0, 0}).label, kOutside);
   EXPECT_EQ(d.oracle->subdomains()[0].name, "ball");
   ASSERT_TRUE(d.hints.size && d.hints.size->is_uniform());
   EXPECT_EQ(d.hints.size->constant, 0.2);
@@ -112,9 +112,9 @@ TEST(DomainFile, SubdomainsWithOutsideAndSingleNames) {
       "subdomains": [{"name": "shell", "inside": "ball", "outside": ["hole"]},
                      {"inside": ["hole", "ball"]}]})",
                                      "test.json");
-  EXPECT_EQ(d.oracle->locate({0.6, 0, 0}), SubdomainId(1));
-  EXPECT_EQ(d.oracle->locate({0, 0, 0.5}), SubdomainId(2));
-  EXPECT_EQ(d.oracle->locate({0, 0, 1.5}), kOutside);
+  EXPECT_EQ(d.oracle->locate({0.6, 0, 0}).label, SubdomainId(1));
+  EXPECT_EQ(d.oracle->locate({0, 0, 0.5}).label, SubdomainId(2));
+  EXPECT_EQ(d.oracle->locate({0, 0, 1.5}).label, kOutside);
   EXPECT_EQ(d.oracle->subdomains()[1].name, "subdomain_2");
   expect_oracle_conformance(*d.oracle, 1000);
 }

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "oracles/oracle_conformance.h"
+#include "rdmesh/errors.h"
 
 namespace rdmesh {
 namespace {
@@ -33,7 +34,7 @@ std::set<int> labels_around_curve(const DomainOracle& o, const Curve& c, const C
   const Point3 x = c.point(t);
   for (int k = 0; k < 64; ++k) {
     const double a = 2 * 3.141592653589793 * k / 64;
-    out.insert(o.locate(x + (r * std::cos(a)) * u + (r * std::sin(a)) * w).value);
+    out.insert(o.locate(x + (r * std::cos(a)) * u + (r * std::sin(a)) * w).label.value);
   }
   return out;
 }
@@ -45,7 +46,7 @@ std::set<int> labels_around_point(const DomainOracle& o, Point3 x, double r) {
   for (int k = 0; k < n; ++k) {
     const double z = 1 - (2 * k + 1.0) / n, rho = std::sqrt(1 - z * z);
     const double phi = k * 2.399963229728653;
-    out.insert(o.locate(x + r * Point3{rho * std::cos(phi), rho * std::sin(phi), z}).value);
+    out.insert(o.locate(x + r * Point3{rho * std::cos(phi), rho * std::sin(phi), z}).label.value);
   }
   return out;
 }
@@ -208,7 +209,9 @@ void expect_feature_conformance(const DomainOracle& oracle, unsigned seed) {
   for (const CurveInfo& c : curves) check_curve(oracle, c, rng);
   for (const CornerInfo& q : corners) check_corner_patches(oracle, q);
   check_meetings(oracle, curves, corners);
-  EXPECT_THROW(oracle.curve(CurveId(static_cast<int>(curves.size()) + 1)), std::exception);
+  // The typed error of the interface, for ids on both sides of 1..n.
+  EXPECT_THROW(oracle.curve(CurveId(static_cast<int>(curves.size()) + 1)), OracleError);
+  EXPECT_THROW(oracle.curve(CurveId(0)), OracleError);
 }
 
 }  // namespace rdmesh

@@ -7,6 +7,7 @@
 #include <random>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 namespace rdmesh {
 namespace {
@@ -27,7 +28,7 @@ const PatchInfo* find_patch(const std::vector<PatchInfo>& patches, PatchId id) {
 
 /// True when {locate(p - d), locate(p + d)} are exactly the two sides of `patch`.
 bool separates(const DomainOracle& o, const PatchInfo& patch, Point3 p, Point3 d) {
-  const int l1 = o.locate(p - d).value, l2 = o.locate(p + d).value;
+  const int l1 = o.locate(p - d).label.value, l2 = o.locate(p + d).label.value;
   return std::min(l1, l2) == patch.side_a.value && std::max(l1, l2) == patch.side_b.value;
 }
 
@@ -39,7 +40,7 @@ bool touches(const DomainOracle& o, const PatchInfo& patch, Point3 p, double r) 
   for (int i = 0; i < 27; ++i) {
     const Point3 dir{double(i % 3 - 1), double(i / 3 % 3 - 1), double(i / 9 - 1)};
     if (i == 13) continue;
-    const int l = o.locate(p + (r / norm(dir)) * dir).value;
+    const int l = o.locate(p + (r / norm(dir)) * dir).label.value;
     seen_a = seen_a || l == patch.side_a.value;
     seen_b = seen_b || l == patch.side_b.value;
   }
@@ -76,13 +77,32 @@ void check_outside_box(const DomainOracle& o, std::mt19937& rng, int samples) {
   for (int i = 0; i < samples; ++i) {
     const Point3 p{box.lo.x + u(rng) * size.x, box.lo.y + u(rng) * size.y,
                    box.lo.z + u(rng) * size.z};
-    const int label = o.locate(p).value;
+    const int label = o.locate(p).label.value;
     if (!box.contains(p)) {
       EXPECT_EQ(label, 0) << "locate" << str(p) << " outside the box";
     } else {
       EXPECT_GE(label, 0);
       EXPECT_LE(label, n);
     }
+  }
+}
+
+/// `hit` meets intersect()'s guarantee for [a, b]: on the segment, on a listed
+/// patch whose two sides are the labels just before and after it.
+void expect_valid_hit(const DomainOracle& o, const std::vector<PatchInfo>& patches, const Point3& a,
+                      const Point3& b, const SurfaceHit& hit, const char* what) {
+  const double tol = o.tolerance(), length = distance(a, b);
+  const Point3 dir = (1 / length) * (b - a);
+  const double t = dot(hit.point - a, dir);
+  EXPECT_LE(distance(hit.point, a + t * dir), tol) << what << " is off the segment";
+  EXPECT_GE(t, -tol) << what;
+  EXPECT_LE(t, length + tol) << what;
+  const PatchInfo* patch = find_patch(patches, hit.patch);
+  EXPECT_NE(patch, nullptr) << what << ": patch " << hit.patch.value << " is not listed";
+  if (patch) {
+    EXPECT_TRUE(separates(o, *patch, hit.point, 4 * tol * dir))
+        << "labels across " << what << " " << str(hit.point) << " on " << str(a) << " - " << str(b)
+        << " are not the sides of patch " << patch->name;
   }
 }
 
@@ -105,31 +125,31 @@ void check_segments(const DomainOracle& o, std::mt19937& rng, int samples) {
       b = a + (len / std::max(norm(b - a), 1e-300)) * (b - a);
       if (!box.contains(b)) continue;
     }
-    const double length = distance(a, b);
-    if (!(length > 100 * tol)) continue;
-    const Point3 dir = (1 / length) * (b - a);
-    const SubdomainId la = o.locate(a), lb = o.locate(b);
+    if (!(distance(a, b) > 100 * tol)) continue;
+    const Located at_a = o.locate(a), at_b = o.locate(b);
+    const SubdomainId la = at_a.label, lb = at_b.label;
     const bool differ = la != lb;
-    // Labeling from a known point (the refiner's walk from a labeled neighbor).
-    EXPECT_EQ(o.locate_from(a, b, lb), la) << "locate_from on " << str(a) << " - " << str(b);
-    EXPECT_EQ(o.locate_from(b, a, la), lb) << "locate_from on " << str(b) << " - " << str(a);
+    EXPECT_FALSE(at_a.crossing || at_b.crossing) << "a crossing without a hint";
+    // With a hint (the refiner's walk from a labeled neighbor): the same label,
+    // and any crossing returned is a valid hit of the segment to the hint.
+    for (const auto& [p, q, lp, lq] : {std::tuple{a, b, la, lb}, std::tuple{b, a, lb, la}}) {
+      const Located walked = o.locate(p, LocateHint{q, lq});
+      EXPECT_EQ(walked.label, lp) << "locate from a hint on " << str(p) << " - " << str(q);
+      if (walked.crossing) expect_valid_hit(o, patches, p, q, *walked.crossing, "the crossing");
+      const Located again = o.locate(p, LocateHint{q, lq});
+      EXPECT_TRUE(again.label == walked.label &&
+                  again.crossing.has_value() == walked.crossing.has_value() &&
+                  (!again.crossing || (again.crossing->point == walked.crossing->point &&
+                                       again.crossing->patch == walked.crossing->patch)))
+          << "locate with a hint is not deterministic";
+    }
     const std::optional<SurfaceHit> hit = o.intersect(a, b);
     crossing += differ;
     if (differ) {
       EXPECT_TRUE(hit.has_value()) << "no hit on " << str(a) << " - " << str(b);
     }
     if (!hit) continue;
-    const double t = dot(hit->point - a, dir);
-    EXPECT_LE(distance(hit->point, a + t * dir), tol) << "hit off the segment";
-    EXPECT_GE(t, -tol);
-    EXPECT_LE(t, length + tol);
-    const PatchInfo* patch = find_patch(patches, hit->patch);
-    EXPECT_NE(patch, nullptr) << "hit patch " << hit->patch.value << " is not listed";
-    if (patch) {
-      EXPECT_TRUE(separates(o, *patch, hit->point, 4 * tol * dir))
-          << "labels across the hit " << str(hit->point) << " on " << str(a) << " - " << str(b)
-          << " are not the sides of patch " << patch->name;
-    }
+    expect_valid_hit(o, patches, a, b, *hit, "the hit");
     const std::optional<SurfaceHit> again = o.intersect(a, b);
     EXPECT_TRUE(again && again->point == hit->point && again->patch == hit->patch)
         << "intersect is not deterministic";

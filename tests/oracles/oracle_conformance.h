@@ -1,5 +1,5 @@
 // The oracle conformance suite: properties every DomainOracle must have
-// (implicit functions today; CAD and triangle meshes later).
+// (implicit functions, triangle meshes, CAD models and the samples' custom oracles).
 #pragma once
 
 #include "rdmesh/oracle.h"
@@ -11,6 +11,9 @@ namespace rdmesh {
 /// - subdomains() are 1..n in order, patches() have ascending unique ids and
 ///   sides 0 <= side_a < side_b <= n;
 /// - locate() is kOutside outside the box and in 0..n inside;
+/// - locate() without a hint returns no crossing; with the label of the other
+///   end of a random segment as hint it returns the same label, deterministically,
+///   and any crossing it returns is a valid hit of that segment (as intersect()'s);
 /// - on `samples` random segments (long and short) in the box: when the end
 ///   labels differ intersect() returns a point on the segment, the labels at
 ///   +-4 tolerance() along the segment differ and are the hit's patch sides, and
@@ -33,7 +36,7 @@ void expect_oracle_conformance(const DomainOracle& oracle, int samples = 2000, u
 /// - length is additive, parameter_at_length inverts it, closest returns a
 ///   point at least as close as a known one, plane_crossings lie on the plane
 ///   and find the crossing through a chosen curve point;
-/// - curves meet only at corners; curve(n + 1) throws.
+/// - curves meet only at corners; curve(0) and curve(n + 1) throw OracleError.
 void expect_feature_conformance(const DomainOracle& oracle, unsigned seed = 1);
 
 }  // namespace rdmesh

@@ -43,7 +43,7 @@ TEST(TriangleMeshOracle, SurfaceOnlyAcceptsAnOpenBoxAndItsBorderIsACurve) {
   EXPECT_THROW(TriangleMeshOracle(open, "open"), InputError);
   const TriangleMeshOracle o(open, "open", {.surface_only = true});
   EXPECT_TRUE(o.subdomains().empty());
-  EXPECT_EQ(o.locate({0.5, 0.5, 0.5}), kOutside);
+  EXPECT_EQ(o.locate({0.5, 0.5, 0.5}).label, kOutside);
   EXPECT_EQ(o.patches().size(), 5u);
   for (const PatchInfo& p : o.patches()) {
     EXPECT_EQ(p.side_a, kOutside);
@@ -81,12 +81,12 @@ TEST(TriangleMeshOracle, CubeFeatures) {
     EXPECT_NEAR(o.curve(c.id).length(c.t_begin, c.t_end), 1.0, 1e-15);
   }
   EXPECT_NEAR(o.volume(), 1.0, 1e-14);
-  EXPECT_EQ(o.locate({0.5, 0.5, 0.5}), SubdomainId(1));
-  EXPECT_EQ(o.locate({1.5, 0.5, 0.5}), kOutside);
-  EXPECT_EQ(o.locate({0.5, 0.5, 1.0 + 1e-12}), kOutside);
-  EXPECT_EQ(o.locate({0.5, 0.5, 1.0 - 1e-12}), SubdomainId(1));
+  EXPECT_EQ(o.locate({0.5, 0.5, 0.5}).label, SubdomainId(1));
+  EXPECT_EQ(o.locate({1.5, 0.5, 0.5}).label, kOutside);
+  EXPECT_EQ(o.locate({0.5, 0.5, 1.0 + 1e-12}).label, kOutside);
+  EXPECT_EQ(o.locate({0.5, 0.5, 1.0 - 1e-12}).label, SubdomainId(1));
   // Through the middle of an edge and a corner of the cube: rays are retried.
-  EXPECT_EQ(o.locate({0.5, 0.5, 0.5}), SubdomainId(1));
+  EXPECT_EQ(o.locate({0.5, 0.5, 0.5}).label, SubdomainId(1));
   const auto hit = o.intersect({0.5, 0.5, 0.5}, {0.5, 0.5, 3});
   ASSERT_TRUE(hit);
   EXPECT_NEAR(hit->point.z, 1.0, 1e-15);
@@ -108,10 +108,10 @@ TEST(TriangleMeshOracle, NestedAndSideBySideComponents) {
   s = join(s, box_soup({5, 0, 0}, {6, 1, 1}));
   const TriangleMeshOracle o(s, "nested");
   ASSERT_EQ(o.subdomains().size(), 3u);
-  EXPECT_EQ(o.locate({0.5, 0.5, 0.5}), SubdomainId(1));
-  EXPECT_EQ(o.locate({1.5, 1.5, 1.5}), SubdomainId(2));
-  EXPECT_EQ(o.locate({5.5, 0.5, 0.5}), SubdomainId(3));
-  EXPECT_EQ(o.locate({4.5, 0.5, 0.5}), kOutside);
+  EXPECT_EQ(o.locate({0.5, 0.5, 0.5}).label, SubdomainId(1));
+  EXPECT_EQ(o.locate({1.5, 1.5, 1.5}).label, SubdomainId(2));
+  EXPECT_EQ(o.locate({5.5, 0.5, 0.5}).label, SubdomainId(3));
+  EXPECT_EQ(o.locate({4.5, 0.5, 0.5}).label, kOutside);
   EXPECT_NEAR(o.volume(), 64 + 1, 1e-12);
   ASSERT_EQ(o.patches().size(), 18u);
   for (const PatchInfo& p : o.patches()) {

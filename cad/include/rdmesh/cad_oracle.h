@@ -98,14 +98,12 @@ class CadOracle final : public DomainOracle {
   CadOracle& operator=(const CadOracle&) = delete;
 
   Box3 bounding_box() const override;
-  SubdomainId locate(const Point3& p) const override;
-  /// The face crossed last on the way from `known` to p decides; no crossing
-  /// keeps known_label. A grazing crossing falls back to locate().
-  SubdomainId locate_from(const Point3& p, const Point3& known,
-                          SubdomainId known_label) const override;
-  /// locate_from() and the transversal crossing that decided it.
-  Located locate_across(const Point3& p, const Point3& known,
-                        SubdomainId known_label) const override;
+  /// Without a hint, rays from p (the first transversal one decides). With
+  /// one, the face crossed last on the way from the hint's point to p decides,
+  /// and is returned as the crossing; no crossing keeps the hint's label; a
+  /// grazing crossing falls back to the rays.
+  Located locate(const Point3& p,
+                 const std::optional<LocateHint>& hint = std::nullopt) const override;
   /// The transversal crossing nearest to a; when none is found but the end
   /// labels differ, the label change is bracketed by bisection on locate().
   std::optional<SurfaceHit> intersect(const Point3& a, const Point3& b) const override;

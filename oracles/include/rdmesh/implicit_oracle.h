@@ -42,6 +42,7 @@
 #include <string>
 #include <vector>
 
+#include "rdmesh/feature_table.h"
 #include "rdmesh/oracle.h"
 
 namespace rdmesh {
@@ -105,7 +106,10 @@ class ImplicitOracle final : public DomainOracle {
                  std::vector<CurveSpec> curves = {});
 
   Box3 bounding_box() const override { return box_; }
-  SubdomainId locate(const Point3& p) const override;
+  /// The functions' signs at p against the subdomains' rules: as cheap as
+  /// any walk, so the hint is ignored.
+  Located locate(const Point3& p,
+                 const std::optional<LocateHint>& hint = std::nullopt) const override;
   /// Label change bracketed by bisection on the sign pattern until a single
   /// function changes sign, then Brent's method on that function; the hit is
   /// within tolerance() (measured along the segment) of a label change. No heap
@@ -114,7 +118,9 @@ class ImplicitOracle final : public DomainOracle {
   std::vector<SubdomainInfo> subdomains() const override { return subdomain_infos_; }
   std::vector<PatchInfo> patches() const override { return patches_; }
   /// Empty for a patch id that sampling did not find.
-  std::vector<Point3> initial_points(PatchId patch) const override;
+  std::vector<Point3> initial_points(PatchId patch) const override {
+    return features_.initial_points(patch);
+  }
   /// Newton projection onto the zero set of each function that can bound the
   /// patch and onto each crease where two of them vanish (finite-difference
   /// gradients), then a foot-point iteration; each result is verified (the
@@ -134,11 +140,10 @@ class ImplicitOracle final : public DomainOracle {
   /// 1e-10 times the box diagonal.
   double tolerance() const override { return tolerance_; }
   /// Corners: endpoints of the open curve pieces (empty without curves).
-  std::vector<CornerInfo> corners() const override { return corner_infos_; }
+  std::vector<CornerInfo> corners() const override { return features_.corners(); }
   /// Curve pieces after splitting at meeting points, in declaration order.
-  std::vector<CurveInfo> curves() const override { return curve_infos_; }
-  /// The piece `id` (throws OracleError for an unknown id).
-  const Curve& curve(CurveId id) const override;
+  std::vector<CurveInfo> curves() const override { return features_.curves(); }
+  const Curve& curve(CurveId id) const override { return features_.curve(id); }
 
   /// The listed patch of smallest id between labels a != b (in any order);
   /// throws OracleError when no listed patch separates them.
@@ -181,12 +186,9 @@ class ImplicitOracle final : public DomainOracle {
   std::vector<int> patch_of_key_;  // key -> patch id
   std::vector<int> key_of_patch_;  // patch id -> key (listed patches)
   std::vector<PatchInfo> patches_;
-  std::vector<std::vector<Point3>> initial_points_;  // indexed by patch id
   Options options_;
   double tolerance_ = 0;
-  std::vector<CurveInfo> curve_infos_;
-  std::vector<CornerInfo> corner_infos_;
-  std::vector<std::shared_ptr<const Curve>> curve_pieces_;  // indexed by curve id - 1
+  FeatureTable<> features_;  // curve pieces, their corners, initial points
 };
 
 }  // namespace rdmesh

@@ -35,50 +35,55 @@ struct SurfaceHit {
   PatchId patch;
 };
 
+/// A point whose label is known: the hint that lets locate() walk from it.
+struct LocateHint {
+  Point3 point;
+  SubdomainId label;  ///< what locate(point).label is
+};
+
+/// What locate() found: the label, and the crossing of [p, hint] that decided it.
+struct Located {
+  Located(SubdomainId l, std::optional<SurfaceHit> c = std::nullopt) : label(l), crossing(c) {}
+  SubdomainId label;
+  std::optional<SurfaceHit> crossing;
+};
+
 class DomainOracle {
  public:
   virtual ~DomainOracle() = default;
 
-  /// A box containing the whole domain: locate(p) == kOutside for every p outside it.
+  /// A box containing the whole domain: locate(p).label == kOutside for every p outside it.
   virtual Box3 bounding_box() const = 0;
 
-  /// Label of the subdomain containing p, kOutside (0) when p is outside the domain.
-  virtual SubdomainId locate(const Point3& p) const = 0;
-
-  /// locate(p), given a point `known` whose label is `known_label` (what
-  /// locate(known) returns). The refiner labels a new cell from a labeled
-  /// neighbor this way. Oracles whose locate() casts rays across the whole
-  /// domain override it with one short query along [p, known]; the default
-  /// ignores the hint.
-  virtual SubdomainId locate_from(const Point3& p, const Point3& known,
-                                  SubdomainId known_label) const {
-    (void)known;
-    (void)known_label;
-    return locate(p);
-  }
-
-  /// locate_from(p, known, known_label), and the crossing of [p, known] that
-  /// decided it when the oracle found one: a hit that meets intersect()'s
-  /// guarantee for that segment. The refiner labels a new cell from a
-  /// neighbor's center and then needs a crossing of the very same segment (the
-  /// dual edge of the facet between them) when their labels differ; an oracle
-  /// that answers locate_from() by a crossing hands it over here. The default
-  /// returns none, and the refiner calls intersect().
-  struct Located {
-    SubdomainId label;
-    std::optional<SurfaceHit> crossing;
-  };
-  virtual Located locate_across(const Point3& p, const Point3& known,
-                                SubdomainId known_label) const {
-    return {locate_from(p, known, known_label), std::nullopt};
-  }
+  /// Where p is: the subdomain containing it (kOutside, 0, outside the
+  /// domain), and, when a hint led there across a patch, that crossing.
+  ///
+  /// `hint`, when given, is a point whose label is known (what locate() of it
+  /// returns). The refiner labels each new cell from a labeled neighbor's
+  /// center this way: oracles whose plain locate() casts rays across the whole
+  /// domain answer instead by one short query along [p, hint->point]. An
+  /// oracle that found the label by such a crossing returns it as `crossing`
+  /// (a hit that meets intersect()'s guarantee for [p, hint->point]): the
+  /// refiner then reuses it for the facet whose dual edge is that segment
+  /// instead of calling intersect() on it again. With or without a hint the
+  /// label is the same (up to rounding where the segment passes through a
+  /// patch's boundary); an oracle without a cheaper walk ignores the hint and
+  /// returns no crossing. Overrides repeat the default argument.
+  virtual Located locate(const Point3& p,
+                         const std::optional<LocateHint>& hint = std::nullopt) const = 0;
 
   /// A crossing of segment [a, b] with a patch. Guarantee: whenever
   /// locate(a) != locate(b) a hit is returned, its point lies on the segment
   /// within tolerance() of the patch, and its patch separates two labels met
   /// along the segment. When locate(a) == locate(b) it may return nullopt even
   /// if the segment crosses the boundary an even number of times.
-  virtual std::optional<SurfaceHit> intersect(const Point3& a, const Point3& b) const = 0;
+  ///
+  /// The default bisects [a, b] on locate() down to tolerance() and returns the
+  /// first listed patch between the two labels it ends between: exact up to
+  /// tolerance() for any locate(), at about log2(|b - a| / tolerance()) calls
+  /// of it (and one of patches()). Override it where a closed form or a root
+  /// finder on the geometry is faster, as the built-in oracles do.
+  virtual std::optional<SurfaceHit> intersect(const Point3& a, const Point3& b) const;
 
   /// All subdomains, ids 1..n in order.
   virtual std::vector<SubdomainInfo> subdomains() const = 0;
@@ -124,16 +129,26 @@ class DomainOracle {
   /// Absolute accuracy of the points returned by intersect(), initial_points() and project().
   virtual double tolerance() const = 0;
 
-  // --- Sharp features: curves L and corners Q (empty for a smooth domain) ---
+  // --- Sharp features: curves L and corners Q ---
+  //
+  // Part of the input complex the mesh conforms to (protecting balls, or the
+  // paper's rules R1-R2 on the curves). A smooth domain has none and overrides
+  // none of the three: the defaults say so. An oracle with features overrides
+  // all three, and may keep them in a FeatureTable (rdmesh/feature_table.h),
+  // as the built-in oracles do. Defaults rather than a separate "features"
+  // base class: one interface to implement and to pass around, no cast to ask
+  // whether a domain has curves (an empty list says it), and the refiner's
+  // code reads the same for smooth and sharp domains.
 
-  /// All corners, ids 1..n in order.
-  virtual std::vector<CornerInfo> corners() const = 0;
+  /// All corners, ids 1..n in order. Default: none.
+  virtual std::vector<CornerInfo> corners() const { return {}; }
 
-  /// All curves, ids 1..n in order.
-  virtual std::vector<CurveInfo> curves() const = 0;
+  /// All curves, ids 1..n in order. Default: none.
+  virtual std::vector<CurveInfo> curves() const { return {}; }
 
-  /// Exact queries on curve `id`; throws OracleError for an unknown id.
-  virtual const Curve& curve(CurveId id) const = 0;
+  /// Exact queries on curve `id`; throws OracleError for an id outside 1..n
+  /// (the default has no curve, so it always throws).
+  virtual const Curve& curve(CurveId id) const;
 };
 
 }  // namespace rdmesh

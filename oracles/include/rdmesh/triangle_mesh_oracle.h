@@ -35,6 +35,7 @@
 #include <string>
 #include <vector>
 
+#include "rdmesh/feature_table.h"
 #include "rdmesh/oracle.h"
 #include "rdmesh/polyline_curve.h"
 #include "rdmesh/triangle_mesh_io.h"
@@ -79,17 +80,20 @@ class TriangleMeshOracle final : public DomainOracle {
 
   /// The mesh's box, enlarged by 1% of its diagonal on every side.
   Box3 bounding_box() const override { return box_; }
-  SubdomainId locate(const Point3& p) const override;
-  /// The parity of the crossings of [p, known] flips the components holding
-  /// `known`; a segment through an edge or a vertex falls back to locate().
-  SubdomainId locate_from(const Point3& p, const Point3& known,
-                          SubdomainId known_label) const override;
+  /// Without a hint, the parity of the crossings of a ray from p with each
+  /// component. With one, the parity of the crossings of [p, hint] flips the
+  /// components holding the hint's point (no crossing is returned); a segment
+  /// through an edge or a vertex falls back to the rays.
+  Located locate(const Point3& p,
+                 const std::optional<LocateHint>& hint = std::nullopt) const override;
   std::optional<SurfaceHit> intersect(const Point3& a, const Point3& b) const override;
   std::vector<SubdomainInfo> subdomains() const override { return subdomain_infos_; }
   std::vector<PatchInfo> patches() const override { return patch_infos_; }
   /// Centroids of up to 8 triangles of the patch spread over its triangle list
   /// (at least 3 points: more inside a single triangle for tiny patches).
-  std::vector<Point3> initial_points(PatchId patch) const override;
+  std::vector<Point3> initial_points(PatchId patch) const override {
+    return features_.initial_points(patch);
+  }
   /// The closest point of the patch's triangles (exact up to rounding); nullopt
   /// for an unknown patch.
   std::optional<Point3> project(const Point3& p, PatchId patch) const override;
@@ -102,9 +106,9 @@ class TriangleMeshOracle final : public DomainOracle {
   std::optional<double> curvature(const Point3& p, PatchId patch) const override;
   /// 1e-10 times the mesh's box diagonal.
   double tolerance() const override { return tolerance_; }
-  std::vector<CornerInfo> corners() const override { return corner_infos_; }
-  std::vector<CurveInfo> curves() const override { return curve_infos_; }
-  const Curve& curve(CurveId id) const override;
+  std::vector<CornerInfo> corners() const override { return features_.corners(); }
+  std::vector<CurveInfo> curves() const override { return features_.curves(); }
+  const Curve& curve(CurveId id) const override { return features_.curve(id); }
 
   /// The oriented mesh (normals out of each closed component, duplicates merged).
   const TriangleSoup& mesh() const { return mesh_; }
@@ -121,6 +125,8 @@ class TriangleMeshOracle final : public DomainOracle {
   void build_subdomains(int component_count);
   void build_patches(const std::vector<std::array<int, 3>>& neighbors, const EdgeFlags& sharp);
   void build_curvature();  // triangle_mesh_curvature.cpp
+  /// Initial points on the triangles `tris` of a patch (see initial_points()).
+  std::vector<Point3> points_on(const std::vector<int>& tris) const;
   // triangle_mesh_features.cpp
   EdgeFlags sharp_edges(const std::vector<std::array<int, 3>>& neighbors) const;
   void build_features(const std::vector<std::array<int, 3>>& neighbors, const EdgeFlags& sharp);
@@ -132,6 +138,9 @@ class TriangleMeshOracle final : public DomainOracle {
   /// Flips inside[c] for each crossing of [p, q] with component c (same rules).
   bool flip_crossings(const Point3& p, const Point3& q, int skip, bool force,
                       unsigned char* inside) const;
+  /// The label of p from the hint's by the crossings of [p, hint.point];
+  /// nullopt when the segment meets an edge or a vertex or the hint is unusable.
+  std::optional<SubdomainId> walk(const Point3& p, const LocateHint& hint) const;
   /// The deepest component flagged in `inside`, -1 for none.
   int innermost(const unsigned char* inside) const;
 
@@ -153,9 +162,7 @@ class TriangleMeshOracle final : public DomainOracle {
   std::vector<std::vector<int>> patch_triangles_;        // indexed by patch id - 1
   std::vector<std::array<double, 3>> corner_curvature_;  // per triangle corner, within its patch
   int sharp_edge_count_ = 0;
-  std::vector<CornerInfo> corner_infos_;
-  std::vector<CurveInfo> curve_infos_;
-  std::vector<std::unique_ptr<PolylineCurve>> curves_;
+  FeatureTable<PolylineCurve> features_;  // sharp curves, corners, initial points
 };
 
 }  // namespace rdmesh
