@@ -7,6 +7,7 @@
 #include <random>
 #include <thread>
 
+#include "oracles/error_of.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/parametric_curve.h"
 #include "rdmesh/polyline_curve.h"
@@ -144,15 +145,6 @@ TEST(ParametricCurve, LineFromExpressions) {
   const ParametricCurve c("0.3*cos(t)", "0.3*sin(t)", "0.953939", 0, 6.283185307179586);
   EXPECT_TRUE(c.closed());
   EXPECT_NEAR(c.total_length(), 0.6 * kPi, 1e-11);
-}
-
-std::string error_of(auto&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
 }
 
 TEST(ParametricCurve, Errors) {

@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "oracles/error_of.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/implicit_oracle.h"
 #include "rdmesh/polyline_curve.h"
@@ -13,17 +14,6 @@
 
 namespace rdmesh {
 namespace {
-
-/// The message `call` throws as OracleError ("" when it throws nothing else).
-template <class F>
-std::string oracle_error(F call) {
-  try {
-    call();
-  } catch (const OracleError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 TEST(FeatureTable, NumbersFeaturesFromOneAndRefusesOtherIds) {
   FeatureTable<PolylineCurve> t;
@@ -38,9 +28,9 @@ TEST(FeatureTable, NumbersFeaturesFromOneAndRefusesOtherIds) {
   EXPECT_EQ(added.id, CurveId(1));
   EXPECT_EQ(t.curves().size(), 1u);
   EXPECT_EQ(t.curve(CurveId(1)).point(t.curve(CurveId(1)).t_end()), (Point3{1, 0, 0}));
-  EXPECT_EQ(oracle_error([&] { t.curve(CurveId(2)); }), "no curve 2 (ids 1..1)");
-  EXPECT_EQ(oracle_error([&] { t.curve(CurveId(-1)); }), "no curve -1 (ids 1..1)");
-  EXPECT_EQ(oracle_error([&] { t.corner(CornerId(3)); }), "no corner 3 (ids 1..2)");
+  EXPECT_EQ(error_of<OracleError>([&] { t.curve(CurveId(2)); }), "no curve 2 (ids 1..1)");
+  EXPECT_EQ(error_of<OracleError>([&] { t.curve(CurveId(-1)); }), "no curve -1 (ids 1..1)");
+  EXPECT_EQ(error_of<OracleError>([&] { t.corner(CornerId(3)); }), "no corner 3 (ids 1..2)");
 }
 
 TEST(FeatureTable, KeepsInitialPointsByPatchId) {
@@ -54,14 +44,16 @@ TEST(FeatureTable, KeepsInitialPointsByPatchId) {
   EXPECT_TRUE(t.initial_points(PatchId(0)).empty());
   EXPECT_TRUE(t.initial_points(PatchId(3)).empty());
   EXPECT_EQ(t.initial_point_count(), 3u);
-  EXPECT_EQ(oracle_error([&] { t.add_initial_points(PatchId(3), {}); }), "no patch 3 (ids 1..2)");
+  EXPECT_EQ(error_of<OracleError>([&] { t.add_initial_points(PatchId(3), {}); }),
+            "no patch 3 (ids 1..2)");
 }
 
 // The built-in oracles answer through the table: one message for an unknown curve.
 TEST(FeatureTable, TheBuiltInOraclesShareTheUnknownCurveError) {
   const ImplicitOracle sphere({{-2, -2, -2}, {2, 2, 2}},
                               {[](const Point3& p) { return squared_norm(p) - 1; }});
-  EXPECT_EQ(oracle_error([&] { sphere.curve(CurveId(1)); }), "no curve 1 (there are none)");
+  EXPECT_EQ(error_of<OracleError>([&] { sphere.curve(CurveId(1)); }),
+            "no curve 1 (there are none)");
   EXPECT_EQ(sphere.initial_points(PatchId(1)).size() >= 3, true);
 
   TriangleSoup cube;
@@ -76,7 +68,7 @@ TEST(FeatureTable, TheBuiltInOraclesShareTheUnknownCurveError) {
   const TriangleMeshOracle mesh(cube, "cube");
   const std::size_t n = mesh.curves().size();
   EXPECT_EQ(n, 12u);  // the cube's edges
-  EXPECT_EQ(oracle_error([&] { mesh.curve(CurveId(13)); }), "no curve 13 (ids 1..12)");
+  EXPECT_EQ(error_of<OracleError>([&] { mesh.curve(CurveId(13)); }), "no curve 13 (ids 1..12)");
   for (const PatchInfo& p : mesh.patches()) EXPECT_GE(mesh.initial_points(p.id).size(), 3u);
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "oracles/error_of.h"
 #include "oracles/oracle_conformance.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/implicit_oracle.h"
@@ -26,15 +27,6 @@ ImplicitOracle::CurveSpec circle_spec(std::string name, Point3 u, Point3 v, doub
 
 ImplicitOracle sphere_with(std::vector<ImplicitOracle::CurveSpec> curves) {
   return ImplicitOracle(kBox, {unit_sphere}, {}, {}, {}, std::move(curves));
-}
-
-std::string error_of(auto&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
 }
 
 TEST(ImplicitFeatures, NoCurves) {

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "oracles/error_of.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/triangle_mesh_check.h"
 
@@ -32,15 +33,6 @@ std::string temp_file(const std::string& name, const std::string& content) {
 
 void expect_has(const std::string& text, const std::string& part) {
   EXPECT_NE(text.find(part), std::string::npos) << "'" << text << "' lacks '" << part << "'";
-}
-
-std::string error_of(auto&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
 }
 
 /// The cube's triangles as (x y z) corner triples, for writing other formats.
