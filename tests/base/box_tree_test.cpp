@@ -54,7 +54,9 @@ TEST(BoxTree, TraverseVisitsExactlyTheOverlappingItems) {
     std::set<int> found, expected;
     tree.traverse([&](const Box3& b) { return boxes_overlap(b, query); },
                   [&](int t) {
-                    if (boxes_overlap(box_of(s, t), query)) EXPECT_TRUE(found.insert(t).second);
+                    if (boxes_overlap(box_of(s, t), query)) {
+                      EXPECT_TRUE(found.insert(t).second);
+                    }
                     return true;
                   });
     for (int t = 0; t < static_cast<int>(s.triangles.size()); ++t) {
@@ -99,7 +101,9 @@ TEST(BoxTree, SegmentTestAgreesWithSamplesOfTheSegment) {
       sampled = p.x >= 0 && p.x <= 1 && p.y >= 0 && p.y <= 1 && p.z >= 0 && p.z <= 1;
     }
     // A sampled hit is a hit; the slab test may only add hits that graze the box.
-    if (sampled) EXPECT_TRUE(segment_meets_box(a, b, box));
+    if (sampled) {
+      EXPECT_TRUE(segment_meets_box(a, b, box));
+    }
     hits += sampled;
   }
   EXPECT_GT(hits, 100);
