@@ -61,11 +61,11 @@ ProtectionPlanner::ProtectionPlanner(std::vector<ProtectedCurve> curves,
       d.start = c.info.start.value - 1;
       d.end = c.info.end.value - 1;
       if (d.start < 0 || d.start >= n || d.end < 0 || d.end >= n) {
-        throw OracleError("curve " + c.info.name + " ends at no listed corner");
+        throw OracleError(feature_name(c.info.id, c.info.name) + " ends at no listed corner");
       }
     }
     if (!(d.length > 0) || !std::isfinite(d.length)) {
-      throw OracleError("curve " + c.info.name + " has no positive finite length");
+      throw OracleError(feature_name(c.info.id, c.info.name) + " has no positive finite length");
     }
     d.c = std::move(c);
     curves_.push_back(std::move(d));
@@ -94,7 +94,10 @@ double ProtectionPlanner::step_at(const CurveData& d, double a) const {
   };
   double s = std::min(size_here, cap_start + kGrowth * a);
   if (d.end >= 0) s = std::min(s, allowed(cap_end, std::max(0.0, d.length - a)));
-  for (const Cap& cap : d.caps) {
+  // A cap at (circular) distance c allows at least kGrowth c / (1 + kGrowth):
+  // beyond `reach` (twice that, for rounding) none can lower s.
+  const double reach = 2 * s * (1 + kGrowth) / kGrowth;
+  d.caps.for_each_near(a, reach, d.c.info.closed, d.length, [&](const SizeCaps::Cap& cap) {
     s = std::min(
         s, cap.arc < a ? cap.value + kGrowth * (a - cap.arc) : allowed(cap.value, cap.arc - a));
     if (d.c.info.closed) {  // the cap seen around the curve's closing point
@@ -102,7 +105,7 @@ double ProtectionPlanner::step_at(const CurveData& d, double a) const {
           std::min(std::fabs(cap.arc + d.length - a), std::fabs(cap.arc - d.length - a));
       s = std::min(s, allowed(cap.value, wrapped));
     }
-  }
+  });
   if (!criteria_.edge_size.is_uniform()) {
     // The size at the window's far end depends on s in no monotone way: the
     // largest s (at most the caps' s*) that it allows, by bisection.
@@ -241,14 +244,12 @@ bool ProtectionPlanner::shrink_ball(const BallRef& b, double factor, bool below_
   // would change nothing (the ball is as small as it may get). A sample's ball
   // follows the longer of its two steps, so it may exceed the caps at its own
   // place: with below_caps the new cap is a fraction of those.
-  double now = HUGE_VAL;
-  for (const Cap& cap : d.caps)
-    now = std::min(now, cap.value + kGrowth * std::fabs(cap.arc - s.arc));
+  const double now = d.caps.lowest_at(s.arc, kGrowth);
   const double size = s.radius / kRadiusRatio;
   const double value = std::max(factor * (below_caps ? std::min(now, size) : size), 2 * min_size_);
   if (value >= 0.999 * std::min(now, size)) return false;
   d.dirty = true;
-  d.caps.push_back({s.arc, value});
+  d.caps.add(s.arc, value);
   return true;
 }
 

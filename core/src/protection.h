@@ -49,6 +49,7 @@
 #include "rdmesh/criteria.h"
 #include "rdmesh/curve.h"
 #include "rdmesh/oracle.h"
+#include "size_caps.h"
 
 namespace rdmesh::detail {
 
@@ -158,14 +159,11 @@ class ProtectionPlanner {
   std::vector<int> curves_touching(const BallRef& ball) const;
 
  private:
-  struct Cap {
-    double arc, value;
-  };
   struct CurveData {
     ProtectedCurve c;
     double length = 0;
     int start = -1, end = -1;  ///< corner indices (open curves)
-    std::vector<Cap> caps;
+    SizeCaps caps;
     std::vector<BallSample> samples;
     bool dirty = true;   ///< caps or corner radii changed since the last sampling
     bool clear = false;  ///< samples checked against the other patches since the last sampling
