@@ -29,6 +29,7 @@
 #include <set>
 
 #include "cad_model.h"
+#include "rdmesh/feature_name.h"
 
 namespace rdmesh::cad {
 namespace {
@@ -332,6 +333,16 @@ void collect_curves(CadOracle::Model& m, const TopTools_IndexedMapOfShape& patch
     info.t_begin = t0;
     info.t_end = t1;
     for (int p : patches) info.patches.push_back(PatchId(p));
+    auto curve = std::make_unique<EdgeCurve>(c, t0, t1, q0, q1, curve_samples(c, t0, t1));
+    const double length = curve->length(t0, t1);
+    if (!std::isfinite(length)) {
+      throw InputError(feature_name(info.id, info.name) +
+                       " has no finite length (malformed file?)");
+    }
+    // An edge of no length that OpenCASCADE does not flag as degenerated (a
+    // malformed file whose edge lost a vertex's point) is a point, like the
+    // degenerated edges skipped above: no curve to protect or to mesh.
+    if (!(length > 0)) continue;
     if (!closed) {
       const int a = vertices.Add(v0), b = vertices.Add(v1);
       info.start = CornerId(a);
@@ -341,8 +352,7 @@ void collect_curves(CadOracle::Model& m, const TopTools_IndexedMapOfShape& patch
         corner_patches[q].insert(patches.begin(), patches.end());
       }
     }
-    m.features.add_curve(std::move(info),
-                         std::make_unique<EdgeCurve>(c, t0, t1, q0, q1, curve_samples(c, t0, t1)));
+    m.features.add_curve(std::move(info), std::move(curve));
   }
   for (int q = 1; q <= vertices.Extent(); ++q) {
     CornerInfo& corner =

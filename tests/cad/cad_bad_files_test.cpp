@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -147,6 +148,44 @@ TEST(CadBadFiles, ASurfaceFarFromItsEdgesIsRefusedWhenItsThicknessIsMeasured) {
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_LT(seconds, 40.0);
+}
+
+TEST(CadBadFiles, AnEdgeThatLostItsVertexPointIsAPointNotAnInternalError) {
+  // cadquery_red_cube_blue_cylinder.step with the entities #5 and #267 swapped
+  // and #297's '=' destroyed (fuzz/cli_campaign.py found it): the reader does
+  // not crash, but an edge of the cube ends at a vertex without its point and
+  // has no length. The planner refused it as a broken oracle (exit 3); such an
+  // edge is a point, like the edges OpenCASCADE flags as degenerated.
+  RDMESH_REQUIRE_SHARED_DATA(part, "step/cadquery_red_cube_blue_cylinder.step");
+  std::ifstream in(part, std::ios::binary);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  auto line_at = [&](const std::string& start) {
+    const std::size_t at = text.find("\n" + start);
+    EXPECT_NE(at, std::string::npos) << start;
+    return at + 1;
+  };
+  const std::size_t a = line_at("#5 = "), b = line_at("#267 = ");
+  const std::size_t a_end = text.find('\n', a), b_end = text.find('\n', b);
+  ASSERT_LT(a_end, b);
+  const std::string first = text.substr(a, a_end - a), second = text.substr(b, b_end - b);
+  text.replace(b, second.size(), first);
+  text.replace(a, first.size(), second);
+  text.replace(line_at("#297 = "), 6, "#297 ?");
+  const ScratchDir inputs, scratch;
+  const std::string mutant = inputs.write("mutant.step", text);
+
+  CadOptions options;
+  options.isolate = false;  // the reader does not crash on this one
+  const auto oracle = load_cad_file(mutant, options);
+  ASSERT_FALSE(oracle->curves().empty());
+  for (const CurveInfo& c : oracle->curves()) {
+    const double length = oracle->curve(c.id).length(c.t_begin, c.t_end);
+    EXPECT_GT(length, 0) << c.name;
+    EXPECT_TRUE(std::isfinite(length)) << c.name;
+  }
+  const CliRun run = run_cli("'" + mutant + "' -o out.mesh -q", scratch.path());
+  EXPECT_TRUE(run.exit_code == 0 || run.exit_code == 4) << run.exit_code << ": " << run.output;
+  EXPECT_EQ(scratch.entries(), run.exit_code == 0 ? 1u : 0u);
 }
 
 }  // namespace
