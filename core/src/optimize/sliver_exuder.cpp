@@ -107,15 +107,16 @@ class Exuder {
       VertexPerturber perturber(tr_, next_stamp);
       bound_cosine_ = std::cos(options_.perturb_bound_deg * M_PI / 180);
       requeue(false);
-      process(
-          [&](Vertex_handle v, int) -> const std::vector<Cell_handle>* {
-            if (v->info().dim != FeatureDim::kVolume) return nullptr;
-            ++stats.perturb_moves_tried;
-            if (!perturber.perturb(v, nearest_distance(v))) return nullptr;
-            ++stats.perturb_moves_accepted;
-            return &perturber.new_cells();
-          },
-          stats.time_limit_reached);
+      process([&](Vertex_handle v, int,
+                  std::vector<Cell_handle>& star) { return worst_cosine(v, star); },
+              [&](Vertex_handle v, int) -> const std::vector<Cell_handle>* {
+                if (v->info().dim != FeatureDim::kVolume) return nullptr;
+                ++stats.perturb_moves_tried;
+                if (!perturber.perturb(v, nearest_distance(v))) return nullptr;
+                ++stats.perturb_moves_accepted;
+                return &perturber.new_cells();
+              },
+              stats.time_limit_reached);
       DihedralHistogram histogram;
       domain_cosines(tr_, threads_, cells_, cosines_);
       measure(cosines_, stats.min_dihedral_after_perturb_deg, histogram);
@@ -139,16 +140,32 @@ class Exuder {
   /// `cosines_fresh`: cells_ and cosines_ are those of the current triangulation.
   std::uint32_t pump_passes(ExudationStats& stats, std::uint32_t next_stamp, bool cosines_fresh) {
     WeightPump pump(tr_, next_stamp, limits_, chains_);
+    // Stars may have changed since the last pumping (perturbation): forget every worst cosine.
+    star_version_.assign(moves_.size(), 1);
+    worst_version_.assign(moves_.size(), 0);
+    worst_.assign(moves_.size(), 0);
     const int passes = std::max(1, options_.passes);
     for (int pass = 1; pass <= passes && !stats.time_limit_reached; ++pass) {
       bound_cosine_ = std::cos(options_.sliver_bound_deg * pass / passes * M_PI / 180);
       requeue(cosines_fresh && pass == 1);
       process(
+          [&](Vertex_handle v, int id, std::vector<Cell_handle>& star) {
+            // Kept while the star of v stays as it is (process() counts its changes).
+            star_of_ = -1;
+            if (worst_version_[id] != star_version_[id]) {
+              worst_[id] = worst_cosine(v, star);
+              worst_version_[id] = star_version_[id];
+              star_of_ = id;  // step() may hand `star` to the pump
+            }
+            return worst_[id];
+          },
           [&](Vertex_handle v, int id) -> const std::vector<Cell_handle>* {
             ++stats.moves_tried;
             const double max_weight =
                 v->info().ball_weight + options_.max_weight_ratio * nearest_sq_[id];
-            if (pump.pump(v, max_weight) != WeightPump::Outcome::kAccepted) return nullptr;
+            const std::vector<Cell_handle>* star = star_of_ == id ? &star_ : nullptr;
+            if (pump.pump(v, max_weight, star, worst_[id]) != WeightPump::Outcome::kAccepted)
+              return nullptr;
             ++stats.moves_accepted;
             return &pump.new_cells();
           },
@@ -161,10 +178,11 @@ class Exuder {
 
   /// The worst-first loop: `step(v, id)` tries vertex v and returns the cells
   /// it created when it changed the mesh (nullptr otherwise). A vertex is
-  /// tried again only after its star changed.
-  template <class Step>
-  void process(Step step, bool& time_limit_reached) {
-    std::vector<Cell_handle> star;
+  /// tried again only after its star changed. `worst_of(v, id, scratch)`: the
+  /// worst cosine of the domain cells around v (worst_cosine()).
+  template <class Worst, class Step>
+  void process(Worst worst_of, Step step, bool& time_limit_reached) {
+    std::vector<Cell_handle>& star = star_;
     while (!queue_.empty()) {
       if (options_.time_limit_seconds > 0 && elapsed() > options_.time_limit_seconds) {
         time_limit_reached = true;
@@ -176,7 +194,7 @@ class Exuder {
       const int id = v->info().index;
       if (!dirty_[id] || moves_[id] >= options_.max_moves_per_vertex) continue;
       // The entry may be outdated: re-rank the vertex by its current star.
-      const double worst = worst_cosine(v, star);
+      const double worst = worst_of(v, id, star);
       if (!(worst > bound_cosine_)) continue;
       if (worst < top.cosine) {
         queue_.push({worst, v});
@@ -186,7 +204,14 @@ class Exuder {
       const std::vector<Cell_handle>* created = step(v, id);
       if (created == nullptr) continue;
       ++moves_[id];
-      // Vertices of the new cells: their stars changed.
+      // Vertices of the new cells: their stars changed (every vertex of a
+      // destroyed cell is one of them, none is hidden).
+      for (const Cell_handle& c : *created) {
+        for (int k = 0; k < 4; ++k) {
+          const Vertex_handle u = c->vertex(k);
+          if (!tr_.is_infinite(u) && !star_version_.empty()) ++star_version_[u->info().index];
+        }
+      }
       for (const Cell_handle& c : *created) {
         if (!in_domain(tr_, c)) continue;
         const double cosine = cell_cosine(c);
@@ -279,6 +304,12 @@ class Exuder {
   std::vector<double> nearest_sq_;
   std::vector<int> moves_;   ///< accepted moves per vertex
   std::vector<char> dirty_;  ///< star changed since the vertex was last tried
+  /// By vertex: changes of its star counted by process(); worst_ is its worst
+  /// cosine as it was at change worst_version_ (pump passes).
+  std::vector<std::uint32_t> star_version_, worst_version_;
+  std::vector<double> worst_;
+  std::vector<Cell_handle> star_;  ///< process()'s scratch: the star of vertex star_of_ (-1: none)
+  int star_of_ = -1;
   std::priority_queue<QueuedVertex> queue_;
   std::vector<Cell_handle> cells_;  ///< finite cells, scratch of domain_cosines
   std::vector<double> cosines_;

@@ -55,17 +55,23 @@ WeightPump::WeightPump(Triangulation& tr, std::uint32_t first_stamp, CellLimits 
   edges_.reserve(768);
 }
 
-void WeightPump::collect_star(Vertex_handle v) {
+void WeightPump::collect_star(Vertex_handle v, const std::vector<Cell_handle>* star,
+                              double star_cosine) {
   zone_.clear();
   star_facets_.clear();
-  tr_.incident_cells(v, std::back_inserter(zone_));
-  star_size_ = zone_.size();
-  zone_quality_ = -std::numeric_limits<double>::infinity();
-  for (const Cell_handle& c : zone_) {
-    c->tds_data().mark_in_conflict();
-    if (c->info().label != 0 && !tr_.is_infinite(c))
-      zone_quality_ = std::max(zone_quality_, cell_cosine(c));
+  if (star != nullptr) {
+    zone_.assign(star->begin(), star->end());
+    zone_quality_ = star_cosine;
+  } else {
+    tr_.incident_cells(v, std::back_inserter(zone_));
+    zone_quality_ = -std::numeric_limits<double>::infinity();
+    for (const Cell_handle& c : zone_) {
+      if (c->info().label != 0 && !tr_.is_infinite(c))
+        zone_quality_ = std::max(zone_quality_, cell_cosine(c));
+    }
   }
+  star_size_ = zone_.size();
+  for (const Cell_handle& c : zone_) c->tds_data().mark_in_conflict();
   // The restricted facets (v, a, b) of the star, each once (from the cell of
   // smaller stamp; both cells hold the same data).
   for (const Cell_handle& c : zone_) {
@@ -135,7 +141,7 @@ bool WeightPump::has_boundary_edge(Vertex_handle a, Vertex_handle b) const {
   return it != edges_.end() && it->a == a && it->b == b;
 }
 
-double WeightPump::boundary_quality(Vertex_handle v, double cutoff) {
+double WeightPump::boundary_quality(Vertex_handle v, double cutoff, bool measure) {
   boundary_.clear();
   const Point3 pv = to_point3(v->point());
   double quality = -std::numeric_limits<double>::infinity();
@@ -148,7 +154,7 @@ double WeightPump::boundary_quality(Vertex_handle v, double cutoff) {
       for (int k = 1; k < 4; ++k)
         f.infinite = f.infinite || tr_.is_infinite(c->vertex((i + k) & 3));
       boundary_.push_back(f);
-      if (f.infinite || f.label == 0) continue;
+      if (!measure || f.infinite || f.label == 0) continue;
       const double cosine = max_dihedral_cosine(pv, to_point3(c->vertex((i + 1) & 3)->point()),
                                                 to_point3(c->vertex((i + 2) & 3)->point()),
                                                 to_point3(c->vertex((i + 3) & 3)->point()));
@@ -238,9 +244,10 @@ WeightPump::Check WeightPump::validate(Vertex_handle v) {
   return Check::kValid;
 }
 
-WeightPump::Outcome WeightPump::pump(Vertex_handle v, double max_weight) {
-  collect_star(v);
-  frontier_ = {};
+WeightPump::Outcome WeightPump::pump(Vertex_handle v, double max_weight,
+                                     const std::vector<Cell_handle>* star, double star_cosine) {
+  collect_star(v, star, star_cosine);
+  frontier_.clear();
   for (std::size_t z = 0; z < star_size_; ++z)
     push_frontier(zone_[z]->neighbor(zone_[z]->index(v)), v);
 
@@ -294,11 +301,14 @@ bool WeightPump::commit(Vertex_handle v, double weight) {
   for (const Cell_handle& c : zone_) c->tds_data().mark_in_conflict();
   bool same = true;
   for (const Cell_handle& c : exact_cells_) same = same && c->tds_data().is_in_conflict();
-  boundary_quality(v, std::numeric_limits<double>::infinity());
-  if (!same || validate(v) != Check::kValid) {
+  if (!same) {
     clear_marks();
     return false;
   }
+  // Z is the zone pump() validated (the same cells in the same order, the
+  // triangulation unchanged since): its new star is valid, only its boundary
+  // must be listed again.
+  boundary_quality(v, 0, /*measure=*/false);
   // Remember, for each new cell, the outer cell across its boundary facet.
   struct Outer {
     Cell_handle cell;

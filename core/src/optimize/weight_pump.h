@@ -67,7 +67,11 @@ class WeightPump {
              const ChainEdges* chains = nullptr);
 
   /// Tries weights of `v` in (current weight, max_weight]; applies the best one.
-  Outcome pump(Vertex_handle v, double max_weight);
+  /// `star`, when given: the cells around v as Triangulation::incident_cells
+  /// lists them, with `star_cosine` the worst cosine of its domain cells
+  /// (the caller has them already).
+  Outcome pump(Vertex_handle v, double max_weight, const std::vector<Cell_handle>* star = nullptr,
+               double star_cosine = 0);
 
   /// The cells created by the last accepted pump (the star of its vertex).
   const std::vector<Cell_handle>& new_cells() const { return new_cells_; }
@@ -106,14 +110,15 @@ class WeightPump {
   };
   enum class Check { kValid, kInvalid, kInvalidFromNowOn };
 
-  void collect_star(Vertex_handle v);
+  void collect_star(Vertex_handle v, const std::vector<Cell_handle>* star, double star_cosine);
   void push_frontier(Cell_handle c, Vertex_handle v);
   /// Adds c to Z; false (Z unchanged) when c may never join it.
   bool absorb(Cell_handle c);
   /// Lists the boundary of the current Z with the labels of the new cells and
   /// returns the worst cosine of the new domain cells; stops early (returning
   /// a value >= `cutoff`) as soon as one new domain cell is not better than `cutoff`.
-  double boundary_quality(Vertex_handle v, double cutoff);
+  /// Without `measure`, only lists it (and returns -infinity).
+  double boundary_quality(Vertex_handle v, double cutoff, bool measure = true);
   /// Validity of the current Z, whose boundary boundary_quality() listed in full.
   Check validate(Vertex_handle v);
   bool has_boundary_edge(Vertex_handle a, Vertex_handle b) const;
@@ -136,7 +141,13 @@ class WeightPump {
   std::vector<std::uint32_t> vertex_mark_;  ///< by VertexInfo::index: == mark_ on the boundary
   std::uint32_t mark_ = 0;
   std::uint32_t infinite_mark_ = 0;
-  std::priority_queue<Frontier, std::vector<Frontier>, std::greater<Frontier>> frontier_;
+  /// The cells next to Z, lowest critical weight first; keeps its storage
+  /// from one pump to the next.
+  struct FrontierQueue
+      : std::priority_queue<Frontier, std::vector<Frontier>, std::greater<Frontier>> {
+    void clear() { c.clear(); }
+  };
+  FrontierQueue frontier_;
   std::vector<Cell_handle> exact_cells_;
   std::vector<Triangulation::Facet> exact_facets_;
   std::vector<Cell_handle> new_cells_;
