@@ -47,6 +47,10 @@
 
 namespace rdmesh {
 
+namespace detail {
+struct SamplingGrid;  // implicit_sampling.cpp
+}  // namespace detail
+
 /// Options of ImplicitOracle (a namespace-scope struct so that it can be a default argument).
 struct ImplicitOracleOptions {
   /// Grid cells per box axis used to discover patches, their connected
@@ -162,11 +166,18 @@ class ImplicitOracle final : public DomainOracle {
   std::optional<Point3> project_on_function(const Point3& p, int k, int a, int b) const;
   std::optional<Point3> project_on_crease(const Point3& p, int k, int l, int a, int b) const;
   Point3 gradient(int k, const Point3& p) const;
+  // Sampling (implicit_sampling.cpp).
   void sample_box();
-  /// The state of every grid node (m per axis, in node order) through the
-  /// batch functions; empty when no used function has one.
-  template <class NodePoint>
-  std::vector<std::uint64_t> grid_states(int m, const NodePoint& node_point) const;
+  /// The state of every grid node (in node order) through the batch
+  /// functions; empty when no used function has one.
+  std::vector<std::uint64_t> grid_states(const detail::SamplingGrid& grid) const;
+  /// The label of every grid node; InputError for a subdomain no node lies in.
+  std::vector<int> label_grid(const detail::SamplingGrid& grid) const;
+  /// Numbers the patch keys found, in key order, as listed patches 1..n (the
+  /// others after them); returns n.
+  int number_patches(const std::vector<int>& keys_found);
+  /// Fills patches_ with the listed patches' names and sides.
+  void name_patches(int listed);
   void build_features(std::vector<CurveSpec> specs);  // implicit_features.cpp
   std::vector<PatchId> patches_around(const Curve& curve, double t_begin, double t_end,
                                       const std::string& name) const;
