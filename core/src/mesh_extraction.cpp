@@ -4,7 +4,6 @@
 // restricted facets alone, oriented consistently piece by piece.
 #include <unordered_map>
 
-#include "rdmesh/errors.h"
 #include "rdmesh/triangle_mesh_check.h"
 #include "refiner.h"
 
@@ -76,10 +75,8 @@ void Refiner::extract_surface(TetMesh& mesh, IndexOf& index_of) {
   // Consistent orientation across shared edges (closed pieces outward); a
   // non-manifold or non-orientable result keeps the triangles as they are.
   TriangleSoup soup{mesh.vertices, mesh.triangles};
-  try {
-    orient_triangle_mesh(soup, "", /*require_closed=*/false);
+  if (try_orient_triangle_mesh(soup, /*require_closed=*/false).ok()) {
     mesh.triangles = std::move(soup.triangles);
-  } catch (const InputError&) {
   }
 }
 

@@ -39,10 +39,16 @@ std::vector<HalfEdge> half_edges(const TriangleSoup& soup) {
 
 }  // namespace
 
-TriangleMeshTopology orient_triangle_mesh(TriangleSoup& soup, const std::string& file,
-                                          bool require_closed) {
+OrientationResult try_orient_triangle_mesh(TriangleSoup& soup, bool require_closed) {
   const int n = static_cast<int>(soup.triangles.size());
-  TriangleMeshTopology topo;
+  OrientationResult result;
+  TriangleMeshTopology& topo = result.topology;
+  auto fail = [&result](OrientationFailure failure, std::string problem) {
+    result.failure = failure;
+    result.problem = std::move(problem);
+    result.topology = {};
+    return result;
+  };
   topo.neighbors.assign(n, {-1, -1, -1});
   std::vector<HalfEdge> h = half_edges(soup);
   // same[t][k]: the neighbor traverses the shared edge in the same direction.
@@ -53,9 +59,10 @@ TriangleMeshTopology orient_triangle_mesh(TriangleSoup& soup, const std::string&
     std::size_t j = i;
     while (j < h.size() && h[j].key() == h[i].key()) ++j;
     if (j - i > 2) {
-      throw InputError(file, "non-manifold edge " + str(soup.points[h[i].lo]) + " - " +
-                                 str(soup.points[h[i].hi]) + " shared by " + std::to_string(j - i) +
-                                 " triangles");
+      return fail(OrientationFailure::non_manifold_edge,
+                  "non-manifold edge " + str(soup.points[h[i].lo]) + " - " +
+                      str(soup.points[h[i].hi]) + " shared by " + std::to_string(j - i) +
+                      " triangles");
     }
     if (j - i == 1) {
       ++borders;
@@ -69,9 +76,10 @@ TriangleMeshTopology orient_triangle_mesh(TriangleSoup& soup, const std::string&
     i = j;
   }
   if (require_closed && borders > 0) {
-    throw InputError(file, "not closed: " + std::to_string(borders) + " border edges, e.g. " +
-                               str(soup.points[first_border->lo]) + " - " +
-                               str(soup.points[first_border->hi]));
+    return fail(OrientationFailure::not_closed, "not closed: " + std::to_string(borders) +
+                                                    " border edges, e.g. " +
+                                                    str(soup.points[first_border->lo]) + " - " +
+                                                    str(soup.points[first_border->hi]));
   }
   // Breadth-first orientation of each component.
   topo.component.assign(n, -1);
@@ -98,8 +106,9 @@ TriangleMeshTopology orient_triangle_mesh(TriangleSoup& soup, const std::string&
           flip[u] = want;
           queue.push_back(u);
         } else if (flip[u] != want) {
-          throw InputError(file, "non-orientable surface (a Moebius-like band) around triangle " +
-                                     std::to_string(t));
+          return fail(
+              OrientationFailure::non_orientable,
+              "non-orientable surface (a Moebius-like band) around triangle " + std::to_string(t));
         }
       }
       const auto& tri = soup.triangles[t];
@@ -128,7 +137,14 @@ TriangleMeshTopology orient_triangle_mesh(TriangleSoup& soup, const std::string&
       ++i;
     }
   }
-  return topo;
+  return result;
+}
+
+TriangleMeshTopology orient_triangle_mesh(TriangleSoup& soup, const std::string& file,
+                                          bool require_closed) {
+  OrientationResult result = try_orient_triangle_mesh(soup, require_closed);
+  if (!result.ok()) throw InputError(file, result.problem);
+  return std::move(result.topology);
 }
 
 double enclosed_volume(const TriangleSoup& soup) {

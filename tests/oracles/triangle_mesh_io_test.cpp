@@ -207,6 +207,33 @@ TEST(TriangleMeshCheck, NonManifoldEdge) {
   expect_has(error_of([&] { orient_triangle_mesh(s, "m.off", false); }), "non-manifold edge");
 }
 
+TEST(TriangleMeshCheck, TryOrientReportsFailureAndLeavesTheSoup) {
+  // The five-vertex Moebius band: triangles (i, i+1, i+2) mod 5, manifold but
+  // with no consistent orientation.
+  TriangleSoup band = soup_of(
+      "OFF\n5 5 0\n1 0 0\n0.3 0.95 0.1\n-0.8 0.6 -0.1\n-0.8 -0.6 0.1\n0.3 -0.95 -0.1\n"
+      "3 0 1 2\n3 1 2 3\n3 2 3 4\n3 3 4 0\n3 4 0 1\n");
+  const auto before = band.triangles;
+  const OrientationResult r = try_orient_triangle_mesh(band, false);
+  EXPECT_EQ(r.failure, OrientationFailure::non_orientable);
+  EXPECT_FALSE(r.ok());
+  expect_has(r.problem, "non-orientable surface");
+  EXPECT_EQ(band.triangles, before);
+  expect_has(error_of([&] { orient_triangle_mesh(band, "m.off", false); }),
+             "m.off: non-orientable surface");
+
+  TriangleSoup open = soup_of("OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n");
+  EXPECT_EQ(try_orient_triangle_mesh(open, true).failure, OrientationFailure::not_closed);
+  const OrientationResult fine = try_orient_triangle_mesh(open, false);
+  EXPECT_TRUE(fine.ok());
+  EXPECT_TRUE(fine.problem.empty());
+  EXPECT_EQ(fine.topology.component_count, 1);
+
+  TriangleSoup fan =
+      soup_of("OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n");
+  EXPECT_EQ(try_orient_triangle_mesh(fan, false).failure, OrientationFailure::non_manifold_edge);
+}
+
 TEST(TriangleMeshCheck, OrientsInconsistentTrianglesOutward) {
   TriangleSoup s = cube();
   std::swap(s.triangles[3][1], s.triangles[3][2]);    // one flipped triangle

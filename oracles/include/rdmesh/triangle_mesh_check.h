@@ -25,12 +25,34 @@ struct TriangleMeshTopology {
   std::vector<bool> component_closed;
 };
 
+/// Why a triangle mesh could not be oriented (OrientationResult).
+enum class OrientationFailure {
+  none,               ///< oriented
+  non_manifold_edge,  ///< an edge shared by more than two triangles
+  not_closed,         ///< a border edge, when a closed mesh was required
+  non_orientable,     ///< a component with no consistent orientation (a Moebius-like band)
+};
+
+/// The outcome of try_orient_triangle_mesh: the topology when oriented, else
+/// the failure and its description ("problem", without a file name).
+struct OrientationResult {
+  OrientationFailure failure = OrientationFailure::none;
+  std::string problem;
+  TriangleMeshTopology topology;
+  bool ok() const { return failure == OrientationFailure::none; }
+};
+
 /// Connects the triangles across their edges and orients each component
 /// consistently, closed components with their normals pointing out (positive
 /// enclosed volume): triangles are flipped in place (swapping their last two
-/// corners). Throws InputError "FILE: problem" for an edge shared by more than
-/// two triangles ("non-manifold edge"), a non-orientable component, and when
-/// `require_closed`, a border edge ("not closed").
+/// corners). On failure (an edge shared by more than two triangles, a
+/// non-orientable component, and when `require_closed`, a border edge) the
+/// soup is left as it was and the result says why.
+OrientationResult try_orient_triangle_mesh(TriangleSoup& soup, bool require_closed);
+
+/// try_orient_triangle_mesh for a mesh read from `file`: throws InputError
+/// "FILE: problem" ("non-manifold edge ...", "non-orientable surface ...",
+/// "not closed: ...") on failure.
 TriangleMeshTopology orient_triangle_mesh(TriangleSoup& soup, const std::string& file,
                                           bool require_closed);
 
