@@ -7,16 +7,6 @@
 namespace rdmesh {
 namespace {
 
-Box3 empty_box() {
-  const double inf = HUGE_VAL;
-  return {{inf, inf, inf}, {-inf, -inf, -inf}};
-}
-
-void grow(Box3& b, const Point3& p) {
-  b.lo = {std::min(b.lo.x, p.x), std::min(b.lo.y, p.y), std::min(b.lo.z, p.z)};
-  b.hi = {std::max(b.hi.x, p.x), std::max(b.hi.y, p.y), std::max(b.hi.z, p.z)};
-}
-
 double axis(const Point3& p, int k) { return k == 0 ? p.x : (k == 1 ? p.y : p.z); }
 
 double half_area(const Box3& b) {
@@ -33,8 +23,8 @@ BoxTree::BoxTree(const std::vector<Point3>& points,
   std::vector<Box3> boxes(n);
   std::vector<Point3> centroids(n);
   for (int t = 0; t < n; ++t) {
-    boxes[t] = empty_box();
-    for (int v : triangles[t]) grow(boxes[t], points[v]);
+    boxes[t] =
+        Box3::around({points[triangles[t][0]], points[triangles[t][1]], points[triangles[t][2]]});
     centroids[t] =
         (1.0 / 3) * (points[triangles[t][0]] + points[triangles[t][1]] + points[triangles[t][2]]);
   }
@@ -60,11 +50,11 @@ int BoxTree::build(int begin, int end, int depth, const std::vector<Box3>& boxes
                    const std::vector<Point3>& centroids) {
   const int index = static_cast<int>(nodes_.size());
   nodes_.push_back({});
-  Box3 box = empty_box(), cbox = empty_box();
+  Box3 box = Box3::empty(), cbox = Box3::empty();
   for (int i = begin; i < end; ++i) {
-    grow(box, boxes[order_[i]].lo);
-    grow(box, boxes[order_[i]].hi);
-    grow(cbox, centroids[order_[i]]);
+    box.grow(boxes[order_[i]].lo);
+    box.grow(boxes[order_[i]].hi);
+    cbox.grow(centroids[order_[i]]);
   }
   nodes_[index].box = box;
   if (end - begin <= kLeafSize || depth >= kMaxDepth - 1) {
@@ -104,29 +94,29 @@ int BoxTree::sah_split(int begin, int end, int k, double lo, double width,
   if (!(width > 0)) return median();
   Box3 bin_box[kBins];
   int bin_count[kBins] = {};
-  for (Box3& b : bin_box) b = empty_box();
+  for (Box3& b : bin_box) b = Box3::empty();
   for (int i = begin; i < end; ++i) {
     const int b = bin_of(order_[i]);
     ++bin_count[b];
-    grow(bin_box[b], boxes[order_[i]].lo);
-    grow(bin_box[b], boxes[order_[i]].hi);
+    bin_box[b].grow(boxes[order_[i]].lo);
+    bin_box[b].grow(boxes[order_[i]].hi);
   }
   double right_area[kBins];
   int right_count[kBins];
-  Box3 acc = empty_box();
+  Box3 acc = Box3::empty();
   int count = 0;
   for (int b = kBins - 1; b > 0; --b) {
-    if (bin_count[b] > 0) grow(acc, bin_box[b].lo), grow(acc, bin_box[b].hi);
+    if (bin_count[b] > 0) acc.grow(bin_box[b].lo), acc.grow(bin_box[b].hi);
     count += bin_count[b];
     right_area[b] = count > 0 ? half_area(acc) : 0;
     right_count[b] = count;
   }
-  acc = empty_box();
+  acc = Box3::empty();
   count = 0;
   double best = HUGE_VAL;
   int best_cut = -1;  // left: bins [0, best_cut)
   for (int b = 1; b < kBins; ++b) {
-    if (bin_count[b - 1] > 0) grow(acc, bin_box[b - 1].lo), grow(acc, bin_box[b - 1].hi);
+    if (bin_count[b - 1] > 0) acc.grow(bin_box[b - 1].lo), acc.grow(bin_box[b - 1].hi);
     count += bin_count[b - 1];
     if (count == 0 || right_count[b] == 0) continue;
     const double cost = half_area(acc) * count + right_area[b] * right_count[b];

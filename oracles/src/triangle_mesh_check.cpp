@@ -105,12 +105,7 @@ void check_self_intersections(const TriangleSoup& soup, const std::string& file)
   const int n = static_cast<int>(soup.triangles.size());
   for (int t = 0; t < n; ++t) {
     const auto& tri = soup.triangles[t];
-    Box3 box{soup.points[tri[0]], soup.points[tri[0]]};
-    for (int v : tri) {
-      const Point3& p = soup.points[v];
-      box.lo = {std::min(box.lo.x, p.x), std::min(box.lo.y, p.y), std::min(box.lo.z, p.z)};
-      box.hi = {std::max(box.hi.x, p.x), std::max(box.hi.y, p.y), std::max(box.hi.z, p.z)};
-    }
+    const Box3 box = Box3::around({soup.points[tri[0]], soup.points[tri[1]], soup.points[tri[2]]});
     int bad = -1;
     bvh.traverse([&](const Box3& b) { return boxes_overlap(b, box); },
                  [&](int u) {

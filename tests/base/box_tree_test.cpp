@@ -33,13 +33,18 @@ Soup random_soup(int n, unsigned seed) {
 
 Box3 box_of(const Soup& s, int t) {
   const auto& tri = s.triangles[t];
-  Box3 b{s.points[tri[0]], s.points[tri[0]]};
-  for (int v : tri) {
-    const Point3& p = s.points[v];
-    b.lo = {std::min(b.lo.x, p.x), std::min(b.lo.y, p.y), std::min(b.lo.z, p.z)};
-    b.hi = {std::max(b.hi.x, p.x), std::max(b.hi.y, p.y), std::max(b.hi.z, p.z)};
-  }
-  return b;
+  return Box3::around({s.points[tri[0]], s.points[tri[1]], s.points[tri[2]]});
+}
+
+TEST(Box3, AroundPointsIsTheirComponentwiseRange) {
+  const Box3 b = Box3::around({{1, -2, 3}, {0, 5, -1}, {2, 0, 0}});
+  EXPECT_EQ(b.lo, (Point3{0, -2, -1}));
+  EXPECT_EQ(b.hi, (Point3{2, 5, 3}));
+  EXPECT_FALSE(Box3::empty().contains({0, 0, 0}));
+  Box3 one = Box3::empty();
+  one.grow({1, 2, 3});
+  EXPECT_TRUE(one.contains({1, 2, 3}));
+  EXPECT_EQ(one.lo, one.hi);
 }
 
 TEST(BoxTree, TraverseVisitsExactlyTheOverlappingItems) {

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <compare>
 #include <functional>
+#include <initializer_list>
 
 namespace rdmesh {
 
@@ -35,6 +36,22 @@ inline bool is_finite(Point3 a) {
 /// Axis-aligned box [lo, hi].
 struct Box3 {
   Point3 lo, hi;
+  /// The empty box (lo = +inf, hi = -inf): growing it by points gives their box.
+  static Box3 empty() {
+    const double inf = HUGE_VAL;
+    return {{inf, inf, inf}, {-inf, -inf, -inf}};
+  }
+  /// The smallest box containing `points` (a triangle's corners, say).
+  static Box3 around(std::initializer_list<Point3> points) {
+    Box3 b = empty();
+    for (const Point3& p : points) b.grow(p);
+    return b;
+  }
+  /// Enlarges the box to contain p.
+  void grow(const Point3& p) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+  }
   double diagonal() const { return distance(lo, hi); }
   Point3 center() const { return 0.5 * (lo + hi); }
   bool contains(Point3 p) const {
