@@ -47,6 +47,9 @@ EdgeCurve::EdgeCurve(Handle(Geom_Curve) curve, double t0, double t1, Point3 q0, 
   for (int k = 0; k < cells; ++k) {
     cumulative_[k + 1] = cumulative_[k] + speed_integral(t0_ + k * cell_, t0_ + (k + 1) * cell_);
   }
+  // The whole edge's length, asked by the loader (zero-length edges) and by
+  // the protecting-ball planner: exactly what length(t0, t1) computed before.
+  total_length_ = std::max(0.0, arc(t1_) - arc(t0_));
 }
 
 void EdgeCurve::build_span_caches(const Handle(Geom_Curve) & basis) {
@@ -128,7 +131,11 @@ double EdgeCurve::arc(double t) const {
   return t <= start ? cumulative_[k] : cumulative_[k] + speed_integral(start, t);
 }
 
-double EdgeCurve::length(double ta, double tb) const { return std::max(0.0, arc(tb) - arc(ta)); }
+double EdgeCurve::length(double ta, double tb) const {
+  // arc() clamps to [t0, t1]: any range covering the edge has its whole length.
+  if (ta <= t0_ && tb >= t1_) return total_length_;
+  return std::max(0.0, arc(tb) - arc(ta));
+}
 
 double EdgeCurve::parameter_at_length(double ta, double s) const {
   const double target = arc(ta) + s;

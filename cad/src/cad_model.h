@@ -112,6 +112,7 @@ class EdgeCurve final : public Curve {
   int samples_;
   double cell_;
   std::vector<double> cumulative_;  // arc(t0 + k * cell_)
+  double total_length_ = 0;         // length(t0, t1), computed once
 };
 
 struct SolidPiece {

@@ -47,6 +47,23 @@ INSTANTIATE_TEST_SUITE_P(
                       Expected{CadTestShape::sphere, "sphere", 1, 1, 0, 0}),
     [](const auto& info) { return std::string(info.param.name); });
 
+// An edge's whole length is computed once, when the edge is built: asked over
+// its range or any range covering it, the answer is the same number, 2 pi r
+// for the cylinder's circles (radius 5), and the sum of its two halves.
+TEST(CadOracle, CurveLengthOverTheWholeEdgeIsItsLength) {
+  const auto oracle = make_cad_test_oracle(CadTestShape::cylinder);
+  ASSERT_EQ(oracle->curves().size(), 2u);
+  for (const CurveInfo& c : oracle->curves()) {
+    const Curve& curve = oracle->curve(c.id);
+    const double whole = curve.length(c.t_begin, c.t_end);
+    EXPECT_NEAR(whole, 2 * 3.141592653589793 * 5, 1e-9);
+    EXPECT_EQ(curve.length(c.t_begin - 1, c.t_end + 1), whole);
+    const double mid = 0.5 * (c.t_begin + c.t_end);
+    EXPECT_NEAR(curve.length(c.t_begin, mid) + curve.length(mid, c.t_end), whole, 1e-12 * whole);
+    EXPECT_NEAR(curve.length(c.t_begin, mid), 0.5 * whole, 1e-9);
+  }
+}
+
 // distance_to_other_patches() on the box [0,10] x [0,20] x [0,30]: from
 // (5, 10, 1) the bottom face is 1 away, the faces x = 0 and x = 10 are 5 away.
 TEST(CadOracle, DistanceToOtherPatchesSkipsTheListedOnes) {
