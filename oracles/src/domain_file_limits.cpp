@@ -109,6 +109,16 @@ void check_curve_length(const std::function<Point3(double)>& gamma, double t0, d
     if (!is_finite(p)) return;  // the curve's own reader names the point
     points.push_back(p);
   }
+  // A curve whose points all coincide (constant expressions, a 't' range
+  // below the resolution of double) is a point: the planner of protecting balls
+  // would find it no length to cover.
+  double spread = 0;
+  for (const Point3& p : points) spread = std::max(spread, distance(p, points.front()));
+  if (!(spread > kMinCurveExtentInDiagonals * diagonal)) {
+    throw InputError("it is a point, not a curve: its " + std::to_string(kChords + 1) +
+                     " sampled points all lie within " + short_number(spread) + " of " +
+                     point_text(points.front()) + " (check the expressions and the 't' range)");
+  }
   // An inscribed polygon is no longer and turns no more than its curve (Milnor).
   double length = 0, turning = 0;
   for (int i = 1; i <= kChords; ++i) {

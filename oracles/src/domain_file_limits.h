@@ -20,6 +20,9 @@ inline constexpr std::size_t kMaxSubdomains = 64;
 inline constexpr std::size_t kMaxCurves = 1000;
 inline constexpr std::size_t kMaxPolylinePoints = 100000;
 inline constexpr double kMaxCurveLengthInDiagonals = 1000;
+/// A curve whose points all lie within this many box diagonals of one another
+/// is a point (the implicit oracle's tolerance is 1e-10 diagonals).
+inline constexpr double kMinCurveExtentInDiagonals = 1e-10;
 inline constexpr double kMaxCurveTurns = 100;
 
 /// Refuses text nesting arrays or objects deeper than kMaxJsonDepth (outside strings
@@ -40,7 +43,9 @@ void check_domain_inside_box(const DomainOracle& oracle);
 
 /// Refuses a parametric curve longer than kMaxCurveLengthInDiagonals box diagonals
 /// or turning more than kMaxCurveTurns times, measured on an inscribed polygon of
-/// 4096 jittered chords (lower bounds of both: 10^6 turns of a circle are refused).
+/// 4096 jittered chords (lower bounds of both: 10^6 turns of a circle are refused),
+/// and one whose sampled points all lie within kMinCurveExtentInDiagonals of the
+/// first (a point: constant expressions, a 't' range below double's resolution).
 void check_curve_length(const std::function<Point3(double)>& gamma, double t0, double t1,
                         double diagonal);
 

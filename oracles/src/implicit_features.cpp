@@ -200,6 +200,13 @@ void ImplicitOracle::build_features(std::vector<CurveSpec> specs) {
       d.params.push_back(t);
       d.points.push_back(p);
     }
+    // A curve of no length (constant coordinates) is a point: the planner of
+    // protecting balls would find nothing to cover and fail as on a broken oracle.
+    const double length = d.curve->length(d.t0, d.t1);
+    if (!(length > tolerance_)) {
+      throw InputError(prefix + "it is a point, not a curve: its length " + str(length) +
+                       " is not above the tolerance " + str(tolerance_));
+    }
     d.closed = distance(d.points.front(), d.points.back()) <= merge;
     curves.push_back(std::move(d));
   }

@@ -124,6 +124,13 @@ std::vector<Refused> cases() {
       {"circle_traversed_twice", "in.json", cylinder_with(twice), "", "runs over itself"},
       {"fifty_identical_curves", "in.json", cylinder_with(fifty), "",
        "curves 'c0' and 'c1' are the same curve"},
+      {"constant_curve", "in.json",
+       cylinder_with(R"([{"name": "dot", "x": "0.5", "y": "0", "z": "0.6", "t": [0, 1]}])"), "",
+       "curve 'dot': it is a point, not a curve"},
+      {"curve_range_below_resolution", "in.json",
+       cylinder_with(
+           R"j([{"name": "dot", "x": "0.5*cos(t)", "y": "0.5*sin(t)", "z": "0.6", "t": [0, 1e-300]}])j"),
+       "", "curve 'dot': it is a point, not a curve"},
       // PLY headers that the file cannot hold.
       {"ply_element_without_properties", "in.ply",
        ply_head + "element junk 9000000000000000000\nend_header\n", "", "no property"},

@@ -130,6 +130,14 @@ TEST(DomainFileCurves, Errors) {
                "curve 'p': point 1 must be [x, y, z] (three numbers)");
   expect_error("[{'name': 'p', 'points': [[1, 0, 0], [1, 0, 0]]}]",
                "curve 'p': a polyline needs at least two distinct points");
+  // Constant coordinates, or a 't' range below double's resolution: a point.
+  expect_error("[{'name': 'dot', 'x': '1', 'y': '0', 'z': '0', 't': [0, 1]}]",
+               "curve 'dot': it is a point, not a curve: its 4097 sampled points all lie within 0 "
+               "of (1, 0, 0)");
+  expect_error(
+      "[{'name': 'dot', 'x': 'cos(t)', 'y': 'sin(t)', 'z': '0', 't': [1, "
+      "1.0000000000000002]}]",
+      "curve 'dot': it is a point, not a curve");
   // A polyline on the sphere's equator would cut through the ball: off the boundary.
   expect_error("[{'points': [[1, 0, 0], [0, 1, 0]]}]",
                "curve 'curve_1' is not on the boundary of the domain");

@@ -137,5 +137,17 @@ TEST(ImplicitFeatures, Errors) {
             std::string::npos);
 }
 
+// A curve whose points all coincide is a point on the boundary: refused as
+// input, before the protecting-ball planner finds it nothing to cover.
+TEST(ImplicitFeatures, ACurveOfNoLengthIsAnInputError) {
+  const auto dot = std::make_shared<ParametricCurve>([](double) { return Point3{1, 0, 0}; }, 0, 1);
+  const std::string e = error_of([&] { sphere_with({{"dot", dot, 0, 1}}); });
+  EXPECT_EQ(e.rfind("curve 'dot': it is a point, not a curve: its length 0 is not above the "
+                    "tolerance",
+                    0),
+            0u)
+      << e;
+}
+
 }  // namespace
 }  // namespace rdmesh
