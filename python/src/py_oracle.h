@@ -1,6 +1,7 @@
 // rdmesh.Oracle: a DomainOracle written in Python. A subclass defines
-// bounding_box, locate, intersect, subdomains, patches, initial_points,
-// project and tolerance (see rdmesh/__init__.py); sharp features (curves,
+// bounding_box, locate, subdomains, patches, initial_points, project and
+// tolerance, and may define intersect (else DomainOracle's bisection on
+// locate()) (see rdmesh/__init__.py); sharp features (curves,
 // corners) are not offered to Python oracles. Every query is a Python call
 // made with the GIL held: orders of magnitude slower than a C++ oracle or an
 // expression, which is why the constant answers (box, subdomains, patches,
