@@ -1,6 +1,8 @@
 """rdmesh.Oracle subclasses: the optional intersect and the hint of locate."""
 
 import math
+import pathlib
+import sys
 
 import numpy as np
 import pytest
@@ -8,9 +10,13 @@ import pytest
 import rdmesh
 from mesh_checks import boundary_is_closed, euler_characteristic, volume_per_label
 
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "samples"))
+from python_oracle import Ball  # noqa: E402  (the sample's ball, which defines intersect)
+
 
 class BallWithoutIntersect(rdmesh.Oracle):
-    """The ball |p - c| < r, without intersect: rdmesh bisects on locate."""
+    """The sample's ball without intersect (rdmesh then bisects on locate), whose
+    locate takes the hint."""
 
     def __init__(self, center, radius):
         super().__init__()
@@ -18,40 +24,18 @@ class BallWithoutIntersect(rdmesh.Oracle):
         self.r = float(radius)
         self.hints = []  # a sample of the hints given to locate
 
-    def bounding_box(self):
-        lo, hi = self.c - 1.2 * self.r, self.c + 1.2 * self.r
-        return (*lo, *hi)
-
-    def label(self, p):
-        d = np.subtract(p, self.c)
-        return 1 if d @ d < self.r * self.r else 0
+    bounding_box = Ball.bounding_box
+    label = Ball.locate
+    subdomains = Ball.subdomains
+    patches = Ball.patches
+    initial_points = Ball.initial_points
+    project = Ball.project
+    tolerance = Ball.tolerance
 
     def locate(self, p, hint):
         if hint is not None and len(self.hints) < 1000:
             self.hints.append(hint)
         return self.label(p)
-
-    def subdomains(self):
-        return ["ball"]
-
-    def patches(self):
-        return [("sphere", 0, 1)]
-
-    def initial_points(self, patch):
-        n = 24  # a Fibonacci lattice on the sphere
-        k = np.arange(n) + 0.5
-        z = 1 - 2 * k / n
-        phi = k * math.pi * (3 - math.sqrt(5))
-        s = np.sqrt(1 - z * z)
-        return self.c + self.r * np.stack([s * np.cos(phi), s * np.sin(phi), z], axis=1)
-
-    def project(self, p, patch):
-        d = np.subtract(p, self.c)
-        n = math.sqrt(d @ d)
-        return None if n == 0 else tuple(self.c + self.r * d / n)
-
-    def tolerance(self):
-        return 1e-10 * self.r
 
 
 def test_oracle_without_intersect_meshes_a_ball():
