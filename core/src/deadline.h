@@ -14,6 +14,10 @@ struct TimeLimitReached {};
 class Deadline {
  public:
   using Clock = std::chrono::steady_clock;
+  /// The usual `every` of loops whose step is about one insertion or one
+  /// ball-pair test: cheap enough that reading the clock at each step would
+  /// show, short enough that a limit is overrun by only a few steps' time.
+  static constexpr unsigned kCheckEvery = 256;
   void set(Clock::time_point at) { at_ = at; }
   /// Whether the deadline has passed; only every `every`-th call reads the
   /// clock (the others answer false).

@@ -96,7 +96,7 @@ std::vector<Vertex_handle> insert_balls(Triangulation& tr, const std::vector<Bal
   shared = 0;
   Cell_handle hint;
   for (const std::size_t k : order) {
-    deadline.check(256);
+    deadline.check(Deadline::kCheckEvery);
     const Ball& b = balls[k];
     const Weighted_point wp(points[k], b.radius * b.radius);
     const Vertex_handle v = tr.insert(wp, hint);

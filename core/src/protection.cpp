@@ -411,7 +411,7 @@ bool ProtectionPlanner::separate_balls(bool record) {
   std::vector<double> factor(balls.size(), 1.0);
   bool conflict = false;
   for (std::size_t k = 0; k < balls.size(); ++k) {
-    deadline_.check(256);
+    deadline_.check(Deadline::kCheckEvery);
     const Ball& b = balls[k];
     const Grid& grids = b.moved ? all : moved;
     for (auto g = grids.lower_bound(level[k]); g != grids.end(); ++g) {

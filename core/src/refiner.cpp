@@ -87,7 +87,7 @@ Refiner::PatchPoints Refiner::insert_patch_points() {
   Cell_handle& hint = count.hint;
   for (const PatchInfo& patch : oracle_.patches()) {
     for (const Point3& p : oracle_.initial_points(patch.id)) {
-      deadline_.check(256);
+      deadline_.check(Deadline::kCheckEvery);
       ++count.offered;
       if (curve_level_->keeps_out(p, hint)) {
         ++count.kept_out;
@@ -124,7 +124,7 @@ void Refiner::refine(bool stop_on_conflict) {
     if (step == RefinementScheduler::Step::kStale) continue;
     if (step != RefinementScheduler::Step::kRefined) break;
     if (options_.progress && ++insertions_since_progress_ >= kProgressEvery) report_progress();
-    if (deadline_.passed(256)) {
+    if (deadline_.passed(Deadline::kCheckEvery)) {
       stats_.time_limit_reached = true;
       stats_.stopped_in = MeshingPhase::refinement;
       stats_.elements_left = scheduler_.queued();
