@@ -42,12 +42,11 @@ void CurveRefinementLevel::insert_initial_points(Deadline& deadline, RefinementS
   const std::vector<CornerInfo>& corners = curves_.corners();
   std::vector<Vertex_handle> corner_vertex(corners.size());
   Cell_handle hint;
-  auto insert = [&](const Point3& p, FeatureDim dim, int feature, double t) {
+  auto insert = [&](const Point3& p, FeatureRef feature, double t) {
     const Vertex_handle v = tr_.insert(to_weighted(p), hint);
-    if (v->info().dim != FeatureDim::kVolume && v->info().dim != dim) {
+    if (v->info().dim() != FeatureDim::kVolume && v->info().dim() != feature.dim()) {
       throw OracleError("two features of the oracle share the point " + point_text(p));
     }
-    v->info().dim = dim;
     v->info().feature = feature;
     v->info().t = t;
     hint = v->cell();
@@ -55,16 +54,16 @@ void CurveRefinementLevel::insert_initial_points(Deadline& deadline, RefinementS
     return v;
   };
   for (std::size_t i = 0; i < corners.size(); ++i) {
-    corner_vertex[i] = insert(corners[i].point, FeatureDim::kCorner, static_cast<int>(i) + 1, 0);
+    corner_vertex[i] = insert(corners[i].point, FeatureRef(CornerId{static_cast<int>(i) + 1}), 0);
   }
   for (std::size_t j = 0; j < curves_.curves().size(); ++j) {
     CurveState& c = curves_.curves()[j];
     const double tb = c.info.t_begin, te = c.info.t_end;
-    const int id = static_cast<int>(j) + 1;
+    const FeatureRef id(CurveId{static_cast<int>(j) + 1});
     const double total = c.curve->length(tb, te);
     Vertex_handle first;
     if (c.info.closed) {
-      first = insert(c.curve->point(tb), FeatureDim::kCurve, id, tb);
+      first = insert(c.curve->point(tb), id, tb);
     } else {
       first = corner_vertex.at(c.info.start.value - 1);
     }
@@ -72,7 +71,7 @@ void CurveRefinementLevel::insert_initial_points(Deadline& deadline, RefinementS
     for (int k = 1; k < kInitialArcs; ++k) {
       const double t = c.curve->parameter_at_length(tb, total * k / double(kInitialArcs));
       if (t <= tb || t >= te) continue;
-      const Vertex_handle v = insert(c.curve->point(t), FeatureDim::kCurve, id, t);
+      const Vertex_handle v = insert(c.curve->point(t), id, t);
       c.samples[t] = CurveSample{v, to_point3(v->point())};
     }
     const Vertex_handle last = c.info.closed ? first : corner_vertex.at(c.info.end.value - 1);
@@ -112,7 +111,7 @@ bool CurveRefinementLevel::refine_next(Insertion& insertion) {
 bool CurveRefinementLevel::refine_edge(int curve, CurveState::Arc a, Insertion& insertion) {
   const CurveSample& s = a->second;
   const auto b = std::next(a);
-  const VertexInfo info{FeatureDim::kCurve, curve + 1, s.t_center, -1};
+  const VertexInfo info{FeatureRef(CurveId{curve + 1}), s.t_center, -1};
   if (!(s.t_center > a->first && s.t_center < b->first)) {
     insertion.record_guard(info, s.vertex->info());  // the arc is too short to split
     return false;
@@ -145,7 +144,7 @@ void CurveRefinementLevel::zone_found(const std::vector<Cell_handle>& zone) {
   for (const Cell_handle& z : zone) {
     for (int k = 0; k < 4; ++k) {
       const Vertex_handle v = z->vertex(k);
-      if (tr_.is_infinite(v) || v->info().dim > FeatureDim::kCurve) continue;
+      if (tr_.is_infinite(v) || v->info().dim() > FeatureDim::kCurve) continue;
       if (std::find(zone_feature_vertices_.begin(), zone_feature_vertices_.end(), v) ==
           zone_feature_vertices_.end()) {
         zone_feature_vertices_.push_back(v);

@@ -80,7 +80,7 @@ bool FacetLevel::refine(Cell_handle c, int i, Insertion& insertion, CurveLevel& 
   Cell_handle start = c;
   const Triangulation& tr = complex_.triangulation();
   if (tr.side_of_power_sphere(start, p) != CGAL::ON_BOUNDED_SIDE) start = c->neighbor(i);
-  const VertexInfo info{FeatureDim::kPatch, c->info().facet_patch[i], 0, -1};
+  const VertexInfo info{FeatureRef(PatchId{c->info().facet_patch[i]}), 0, -1};
   if (curves.keeps_facet_centre(c, i, info, insertion)) return false;
   if (!insertion.find_zone(p, start)) {
     insertion.record_guard(info, c->vertex((i + 1) & 3)->info());  // the center is a vertex

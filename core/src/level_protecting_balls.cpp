@@ -47,8 +47,7 @@ namespace {
 struct Ball {
   Point3 point;
   double radius;
-  FeatureDim dim;
-  int feature;
+  FeatureRef feature;
   double t;
 };
 
@@ -60,8 +59,8 @@ std::vector<Ball> gather_balls(const ProtectionPlan& plan, const std::vector<Cor
                                std::vector<std::size_t>& first_ball) {
   std::vector<Ball> balls;
   for (std::size_t q = 0; q < corners.size(); ++q) {
-    balls.push_back(
-        {corners[q].point, plan.corner_radius[q], FeatureDim::kCorner, static_cast<int>(q) + 1, 0});
+    balls.push_back({corners[q].point, plan.corner_radius[q],
+                     FeatureRef(CornerId{static_cast<int>(q) + 1}), 0});
   }
   first_ball.assign(curves.size(), 0);
   for (std::size_t j = 0; j < curves.size(); ++j) {
@@ -70,7 +69,7 @@ std::vector<Ball> gather_balls(const ProtectionPlan& plan, const std::vector<Cor
     const std::size_t from = curves[j].info.closed ? 0 : 1;
     for (std::size_t i = from; i + 1 < s.size(); ++i) {
       balls.push_back(
-          {s[i].point, s[i].radius, FeatureDim::kCurve, static_cast<int>(j) + 1, s[i].t});
+          {s[i].point, s[i].radius, FeatureRef(CurveId{static_cast<int>(j) + 1}), s[i].t});
     }
   }
   return balls;
@@ -100,7 +99,7 @@ std::vector<Vertex_handle> insert_balls(Triangulation& tr, const std::vector<Bal
     const Ball& b = balls[k];
     const Weighted_point wp(points[k], b.radius * b.radius);
     const Vertex_handle v = tr.insert(wp, hint);
-    if (v != Vertex_handle() && v->info().dim != FeatureDim::kVolume && v->point() == wp) {
+    if (v != Vertex_handle() && v->info().dim() != FeatureDim::kVolume && v->point() == wp) {
       // Features closer than anything the planner can separate (edges of
       // touching solids left unmerged) share the vertex: the planner made
       // their balls equal, and the conflict is reported.
@@ -108,11 +107,10 @@ std::vector<Vertex_handle> insert_balls(Triangulation& tr, const std::vector<Bal
       ++shared;
       continue;
     }
-    if (v == Vertex_handle() || v->info().dim != FeatureDim::kVolume) {
+    if (v == Vertex_handle() || v->info().dim() != FeatureDim::kVolume) {
       throw InternalError("protecting ball at " + point_text(b.point) +
                           " is hidden by another or coincides with it");
     }
-    v->info().dim = b.dim;
     v->info().feature = b.feature;
     v->info().t = b.t;
     v->info().ball_weight = b.radius * b.radius;
@@ -219,13 +217,13 @@ bool ProtectingBallsLevel::ball_conflict(Cell_handle c, int i) {
 
 BallRef ProtectingBallsLevel::ball_of(const VertexInfo& info) const {
   BallRef ref;
-  if (info.dim == FeatureDim::kCorner) {
-    ref.corner = info.feature - 1;
+  if (info.dim() == FeatureDim::kCorner) {
+    ref.corner = info.feature.corner().value - 1;
   } else {
-    const std::vector<BallSample>& s = plan_.curves[info.feature - 1].samples;
+    const std::vector<BallSample>& s = plan_.curves[info.feature.curve().value - 1].samples;
     const auto it = std::lower_bound(s.begin(), s.end(), info.t,
                                      [](const BallSample& b, double t) { return b.t < t; });
-    ref.curve = info.feature - 1;
+    ref.curve = info.feature.curve().value - 1;
     ref.index = static_cast<int>(it - s.begin());
   }
   return ref;

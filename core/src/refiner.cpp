@@ -94,9 +94,8 @@ Refiner::PatchPoints Refiner::insert_patch_points() {
         continue;
       }
       const Vertex_handle v = tr_.insert(to_weighted(p), hint);
-      if (v == Vertex_handle() || v->info().dim != FeatureDim::kVolume) continue;  // a duplicate
-      v->info().dim = FeatureDim::kPatch;
-      v->info().feature = patch.id.value;
+      if (v == Vertex_handle() || v->info().dim() != FeatureDim::kVolume) continue;  // a duplicate
+      v->info().feature = FeatureRef(patch.id);
       hint = v->cell();
       ++stats_.initial_points;
     }

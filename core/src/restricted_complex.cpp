@@ -195,13 +195,13 @@ bool RestrictedComplex::on_patch(const VertexInfo& v, int patch) const {
   auto contains = [patch](const std::vector<int>& patches) {
     return std::find(patches.begin(), patches.end(), patch) != patches.end();
   };
-  switch (v.dim) {
+  switch (v.dim()) {
     case FeatureDim::kPatch:
-      return v.feature == patch;
+      return v.feature.patch().value == patch;
     case FeatureDim::kCurve:
-      return contains(curve_patches_[v.feature - 1]);
+      return contains(curve_patches_[v.feature.curve().value - 1]);
     case FeatureDim::kCorner:
-      return contains(corner_patches_[v.feature - 1]);
+      return contains(corner_patches_[v.feature.corner().value - 1]);
     case FeatureDim::kVolume:
       return false;
   }

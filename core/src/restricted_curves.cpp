@@ -74,28 +74,29 @@ void RestrictedCurves::arcs_of(Vertex_handle v, std::vector<std::pair<int, Curve
     if (c.has_next(it)) out.emplace_back(curve, it);
     if (it != c.samples.begin()) out.emplace_back(curve, std::prev(it));
   };
-  if (info.dim == FeatureDim::kCurve) {
-    const int curve = info.feature - 1;
+  if (info.dim() == FeatureDim::kCurve) {
+    const int curve = info.feature.curve().value - 1;
     CurveState& c = curves_[curve];
     add_around(curve, c.samples.find(info.t));
     if (c.info.closed && info.t == c.info.t_begin) add_around(curve, c.samples.find(c.info.t_end));
-  } else if (info.dim == FeatureDim::kCorner) {
-    for (const CurveId& id : corners_[info.feature - 1].curves) {
+  } else if (info.dim() == FeatureDim::kCorner) {
+    const CornerId corner = info.feature.corner();
+    for (const CurveId& id : corners_[corner.value - 1].curves) {
       CurveState& c = curves_[id.value - 1];
-      if (c.info.start.value == info.feature) add_around(id.value - 1, c.samples.begin());
-      if (c.info.end.value == info.feature) add_around(id.value - 1, std::prev(c.samples.end()));
+      if (c.info.start == corner) add_around(id.value - 1, c.samples.begin());
+      if (c.info.end == corner) add_around(id.value - 1, std::prev(c.samples.end()));
     }
   }
 }
 
 std::string RestrictedCurves::describe(const VertexInfo& v) const {
-  switch (v.dim) {
+  switch (v.dim()) {
     case FeatureDim::kCorner:
-      return feature_name(CornerId{v.feature});
+      return feature_name(v.feature.corner());
     case FeatureDim::kCurve:
-      return feature_name(CurveId{v.feature}, curves_[v.feature - 1].info.name);
+      return feature_name(v.feature.curve(), curves_[v.feature.curve().value - 1].info.name);
     case FeatureDim::kPatch:
-      return feature_name(PatchId{v.feature});
+      return feature_name(v.feature.patch());
     case FeatureDim::kVolume:
       return "volume";
   }

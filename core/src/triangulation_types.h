@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <memory>
 
+#include "rdmesh/debug_assert.h"
 #include "rdmesh/geometry.h"
 
 namespace rdmesh::detail {
@@ -21,15 +22,47 @@ namespace rdmesh::detail {
 /// Dimension of the input feature a sample point lies on (RR-7912: F_0..F_3).
 enum class FeatureDim : std::int8_t { kCorner = 0, kCurve = 1, kPatch = 2, kVolume = 3 };
 
+/// The input feature a vertex was inserted on: a corner, a curve or a patch,
+/// or none (a volume point). Each id is read through the accessor of its
+/// dimension, which checks it (RDMESH_DEBUG_ASSERT): a curve id is never read
+/// as a patch id. Eight bytes, as the int and the dimension it replaces.
+class FeatureRef {
+ public:
+  /// A volume point: on no feature.
+  constexpr FeatureRef() = default;
+  constexpr explicit FeatureRef(CornerId q) : dim_(FeatureDim::kCorner), id_(q.value) {}
+  constexpr explicit FeatureRef(CurveId c) : dim_(FeatureDim::kCurve), id_(c.value) {}
+  constexpr explicit FeatureRef(PatchId p) : dim_(FeatureDim::kPatch), id_(p.value) {}
+
+  FeatureDim dim() const { return dim_; }
+  CornerId corner() const {
+    RDMESH_DEBUG_ASSERT(dim_ == FeatureDim::kCorner, "a corner id read from another feature");
+    return CornerId{id_};
+  }
+  CurveId curve() const {
+    RDMESH_DEBUG_ASSERT(dim_ == FeatureDim::kCurve, "a curve id read from another feature");
+    return CurveId{id_};
+  }
+  PatchId patch() const {
+    RDMESH_DEBUG_ASSERT(dim_ == FeatureDim::kPatch, "a patch id read from another feature");
+    return PatchId{id_};
+  }
+
+ private:
+  FeatureDim dim_ = FeatureDim::kVolume;
+  int id_ = 0;  ///< the CornerId / CurveId / PatchId value for dim_ 0 / 1 / 2
+};
+
 /// Per vertex: on which feature it was inserted (corners first, refine-edge on
 /// a curve, refine-facet on a patch, refine-tet in the volume). Rules R1 and
 /// R3 read it.
 struct VertexInfo {
-  FeatureDim dim = FeatureDim::kVolume;
-  int feature = 0;           ///< CornerId / CurveId / PatchId value for dim 0 / 1 / 2
-  double t = 0.0;            ///< curve parameter when dim == kCurve
+  FeatureRef feature;
+  double t = 0.0;            ///< curve parameter when on a curve
   int index = -1;            ///< scratch: output index during extraction
   double ball_weight = 0.0;  ///< squared radius of its protecting ball (0: none)
+
+  FeatureDim dim() const { return feature.dim(); }
 };
 
 /// The centers of the surface Delaunay balls of a cell's four facets, stored

@@ -147,7 +147,7 @@ TEST(CurveLevel, APointInsideAnArcBallRefinesThatArcInstead) {
   const auto mid = std::next(top.samples.begin());
   EXPECT_NEAR(mid->first, M_PI / 3, 1e-9);
   EXPECT_NEAR(distance(mid->second.position, {0.5, std::sqrt(3.0) / 2, 1.0}), 0.0, 1e-9);
-  EXPECT_EQ(mid->second.vertex->info().dim, FeatureDim::kCurve);
+  EXPECT_EQ(mid->second.vertex->info().dim(), FeatureDim::kCurve);
 }
 
 }  // namespace

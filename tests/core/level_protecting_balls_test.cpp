@@ -56,7 +56,7 @@ TEST(ProtectingBallsLevel, TheBallsAreTheRimsSamplesAsWeightedVertices) {
       EXPECT_EQ(t, b.t);
       EXPECT_EQ(sample.position, b.point);
       EXPECT_EQ(sample.vertex->point().weight(), b.radius * b.radius);
-      EXPECT_EQ(sample.vertex->info().dim, FeatureDim::kCurve);
+      EXPECT_EQ(sample.vertex->info().dim(), FeatureDim::kCurve);
       EXPECT_NEAR(std::hypot(b.point.x, b.point.y), 1.0, 1e-9);
     }
   }

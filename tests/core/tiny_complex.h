@@ -27,15 +27,14 @@ struct TinyComplex {
   explicit TinyComplex(bool on_patch) {
     detail::Triangulation& tr = complex.triangulation();
     tr.insert(detail::to_weighted({0, 0, 0}));
-    const int patch = oracle.patches().at(0).id.value;
+    const PatchId patch = oracle.patches().at(0).id;
     for (int axis = 0; axis < 3; ++axis) {
       for (const double s : {-1.0, 1.0}) {
         Point3 p{0, 0, 0};
         (axis == 0 ? p.x : axis == 1 ? p.y : p.z) = s;
         const detail::Vertex_handle v = tr.insert(detail::to_weighted(p));
         if (on_patch) {
-          v->info().dim = detail::FeatureDim::kPatch;
-          v->info().feature = patch;
+          v->info().feature = detail::FeatureRef(patch);
         }
       }
     }

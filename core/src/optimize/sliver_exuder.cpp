@@ -110,7 +110,7 @@ class Exuder {
       process([&](Vertex_handle v, int,
                   std::vector<Cell_handle>& star) { return worst_cosine(v, star); },
               [&](Vertex_handle v, int) -> const std::vector<Cell_handle>* {
-                if (v->info().dim != FeatureDim::kVolume) return nullptr;
+                if (v->info().dim() != FeatureDim::kVolume) return nullptr;
                 ++stats.perturb_moves_tried;
                 if (!perturber.perturb(v, nearest_distance(v))) return nullptr;
                 ++stats.perturb_moves_accepted;

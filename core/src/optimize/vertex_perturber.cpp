@@ -126,7 +126,7 @@ double VertexPerturber::move(Vertex_handle v, const Point3& p, int label) {
 }
 
 bool VertexPerturber::perturb(Vertex_handle v, double nearest) {
-  if (v->info().dim != FeatureDim::kVolume) return false;
+  if (v->info().dim() != FeatureDim::kVolume) return false;
   star_.clear();
   tr_.incident_cells(v, std::back_inserter(star_));
   const int label = star_.front()->info().label;

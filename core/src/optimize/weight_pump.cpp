@@ -210,10 +210,10 @@ WeightPump::Check WeightPump::validate(Vertex_handle v) {
       const Vertex_handle u = c->vertex(k);
       if (u == v) continue;
       if (mark(u) != mark_) return Check::kInvalidFromNowOn;
-      if (z < star_size_ || tr_.is_infinite(u) || u->info().dim > FeatureDim::kCurve) continue;
+      if (z < star_size_ || tr_.is_infinite(u) || u->info().dim() > FeatureDim::kCurve) continue;
       for (int l = k + 1; l < 4; ++l) {
         const Vertex_handle t = c->vertex(l);
-        if (tr_.is_infinite(t) || t->info().dim > FeatureDim::kCurve) continue;
+        if (tr_.is_infinite(t) || t->info().dim() > FeatureDim::kCurve) continue;
         if (chains_ != nullptr && !chains_->contains(u, t)) continue;
         if (!has_boundary_edge(u, t)) return Check::kInvalidFromNowOn;
       }
