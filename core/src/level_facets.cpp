@@ -16,11 +16,10 @@ FacetLevel::FacetLevel(const RestrictedComplex& complex, const Criteria& criteri
 }
 
 Violation FacetLevel::violation(Cell_handle c, int i) const {
-  const int patch = c->info().facet_patch[i];
-  if (patch == 0) return {};
-  RDMESH_DEBUG_ASSERT(
-      patch > 0 && c->neighbor(i)->info().facet_patch[c->neighbor(i)->index(c)] == patch,
-      "both cells of a restricted facet name its patch");
+  const PatchId patch = c->info().facet_patch[i];
+  if (patch == kNotRestricted) return {};
+  RDMESH_DEBUG_ASSERT(c->neighbor(i)->info().facet_patch[c->neighbor(i)->index(c)] == patch,
+                      "both cells of a restricted facet name its patch");
   const Vertex_handle v[3] = {c->vertex((i + 1) & 3), c->vertex((i + 2) & 3),
                               c->vertex((i + 3) & 3)};
   // R3: every vertex of a facet of D|S_k must lie on S_k (or on its boundary curves).
@@ -80,7 +79,7 @@ bool FacetLevel::refine(Cell_handle c, int i, Insertion& insertion, CurveLevel& 
   Cell_handle start = c;
   const Triangulation& tr = complex_.triangulation();
   if (tr.side_of_power_sphere(start, p) != CGAL::ON_BOUNDED_SIDE) start = c->neighbor(i);
-  const VertexInfo info{FeatureRef(PatchId{c->info().facet_patch[i]}), 0, -1};
+  const VertexInfo info{FeatureRef(c->info().facet_patch[i]), 0, -1};
   if (curves.keeps_facet_centre(c, i, info, insertion)) return false;
   if (!insertion.find_zone(p, start)) {
     insertion.record_guard(info, c->vertex((i + 1) & 3)->info());  // the center is a vertex
@@ -100,7 +99,7 @@ bool FacetLevel::encroached(const Point3& x, const std::vector<Cell_handle>& zon
   double best = -1;
   for (const Cell_handle& z : zone) {
     for (int i = 0; i < 4; ++i) {
-      if (z->info().facet_patch[i] == 0) continue;
+      if (z->info().facet_patch[i] == kNotRestricted) continue;
       const Point3 sc = z->info().surface_center[i];
       const double r2 = complex_.facet_power(z, i, sc);
       if (squared_norm(x - sc) < r2 && r2 > best) {

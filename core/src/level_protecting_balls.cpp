@@ -189,7 +189,8 @@ bool ProtectingBallsLevel::find_early_conflicts(const FacetLevel& facets) {
   // from the surface: shrink them before any refinement work.
   for (auto c = tr_.finite_cells_begin(); c != tr_.finite_cells_end(); ++c) {
     for (int i = 0; i < 4; ++i) {
-      if (c->info().facet_patch[i] != 0 && c->neighbor(i)->info().stamp > c->info().stamp) {
+      if (c->info().facet_patch[i] != kNotRestricted &&
+          c->neighbor(i)->info().stamp > c->info().stamp) {
         if (facets.violation(c, i).rule == Rule::kR3NotFaithful) ball_conflict(c, i);
         overlap_conflict(c, i);
       }
@@ -199,7 +200,7 @@ bool ProtectingBallsLevel::find_early_conflicts(const FacetLevel& facets) {
 }
 
 bool ProtectingBallsLevel::ball_conflict(Cell_handle c, int i) {
-  const int patch = c->info().facet_patch[i];
+  const PatchId patch = c->info().facet_patch[i];
   const Point3 center = c->info().surface_center[i];
   for (int k = 1; k < 4; ++k) {
     const Vertex_handle v = c->vertex((i + k) & 3);

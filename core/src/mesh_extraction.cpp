@@ -38,9 +38,9 @@ TetMesh Refiner::extract_mesh() {
                          index_of(c->vertex(3))});
     mesh.tet_subdomain.push_back(SubdomainId{label});
     for (int i = 0; i < 4; ++i) {
-      const int patch = c->info().facet_patch[i];
+      const PatchId patch = c->info().facet_patch[i];
       // A restricted facet separates two labels; emit it from the larger one.
-      if (patch == 0 || c->neighbor(i)->info().label > label) continue;
+      if (patch == kNotRestricted || c->neighbor(i)->info().label > label) continue;
       Vertex_handle a = c->vertex((i + 1) & 3), b = c->vertex((i + 2) & 3),
                     d = c->vertex((i + 3) & 3);
       // Normal (b-a) x (d-a) must point away from this cell's vertex i.
@@ -49,7 +49,7 @@ TetMesh Refiner::extract_mesh() {
         std::swap(b, d);
       }
       mesh.triangles.push_back({index_of(a), index_of(b), index_of(d)});
-      mesh.triangle_patch.push_back(PatchId{patch});
+      mesh.triangle_patch.push_back(patch);
     }
   }
   extract_features(mesh);
@@ -63,13 +63,13 @@ void Refiner::extract_surface(TetMesh& mesh, IndexOf& index_of) {
   // then depended on the heap's layout, e.g. from the CLI to Python.)
   for (auto c = tr_.all_cells_begin(); c != tr_.all_cells_end(); ++c) {
     for (int i = 0; i < 4; ++i) {
-      const int patch = c->info().facet_patch[i];
-      if (patch == 0 || c->neighbor(i)->info().stamp < c->info().stamp) continue;
+      const PatchId patch = c->info().facet_patch[i];
+      if (patch == kNotRestricted || c->neighbor(i)->info().stamp < c->info().stamp) continue;
       const Vertex_handle a = c->vertex((i + 1) & 3), b = c->vertex((i + 2) & 3),
                           d = c->vertex((i + 3) & 3);
       if (tr_.is_infinite(a) || tr_.is_infinite(b) || tr_.is_infinite(d)) continue;
       mesh.triangles.push_back({index_of(a), index_of(b), index_of(d)});
-      mesh.triangle_patch.push_back(PatchId{patch});
+      mesh.triangle_patch.push_back(patch);
     }
   }
   // Consistent orientation across shared edges (closed pieces outward); a

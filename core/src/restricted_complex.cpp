@@ -28,8 +28,8 @@ RestrictedComplex::RestrictedComplex(const DomainOracle& oracle, bool surface_on
   clip_box_ = {box.lo - Point3{margin, margin, margin}, box.hi + Point3{margin, margin, margin}};
 }
 
-void RestrictedComplex::set_feature_patches(std::vector<std::vector<int>> corner_patches,
-                                            std::vector<std::vector<int>> curve_patches) {
+void RestrictedComplex::set_feature_patches(std::vector<std::vector<PatchId>> corner_patches,
+                                            std::vector<std::vector<PatchId>> curve_patches) {
   corner_patches_ = std::move(corner_patches);
   curve_patches_ = std::move(curve_patches);
 }
@@ -48,7 +48,7 @@ void RestrictedComplex::kill(CellInfo& c) {
 void RestrictedComplex::init_cell(Cell_handle c, Cell_handle from) {
   CellInfo& info = c->info();
   stamp_new(info);
-  info.facet_patch = {0, 0, 0, 0};
+  info.facet_patch.fill(kNotRestricted);
   info.crossing_facet = -1;
   if (tr_.is_infinite(c)) {
     info.label = kOutside.value;
@@ -86,7 +86,7 @@ void RestrictedComplex::init_cell(Cell_handle c, Cell_handle from) {
     const int i = c->index(from);
     info.crossing_facet = static_cast<std::int8_t>(i);
     info.crossing_with = from->info().stamp;
-    info.facet_patch[i] = l.crossing->patch.value;
+    info.facet_patch[i] = l.crossing->patch;
     info.surface_center[i] = l.crossing->point;
   }
 }
@@ -112,8 +112,9 @@ std::optional<SurfaceHit> RestrictedComplex::take_crossing(Cell_handle c, int i,
   CellInfo& info = c->info();
   if (info.crossing_facet != i) return std::nullopt;
   info.crossing_facet = -1;
-  if (info.crossing_with != n->info().stamp || info.facet_patch[i] == 0) return std::nullopt;
-  return SurfaceHit{info.surface_center[i], PatchId{info.facet_patch[i]}};
+  if (info.crossing_with != n->info().stamp || info.facet_patch[i] == kNotRestricted)
+    return std::nullopt;
+  return SurfaceHit{info.surface_center[i], info.facet_patch[i]};
 }
 
 bool RestrictedComplex::dual_segment(Cell_handle c, int i, Point3& a, Point3& b) const {
@@ -167,8 +168,8 @@ bool RestrictedComplex::update_facet(Cell_handle c, int i) {
   const int j = n->index(c);
   std::optional<SurfaceHit> hit = take_crossing(c, i, n);
   if (!hit) hit = take_crossing(n, j, c);
-  c->info().facet_patch[i] = 0;
-  n->info().facet_patch[j] = 0;
+  c->info().facet_patch[i] = kNotRestricted;
+  n->info().facet_patch[j] = kNotRestricted;
   // Equal labels: no crossing (or an even number, which refinement removes).
   // Surface only, every dual edge is asked: an open patch has no sides.
   if (c->info().label == n->info().label && !surface_only_) return false;
@@ -179,9 +180,9 @@ bool RestrictedComplex::update_facet(Cell_handle c, int i) {
     hit = oracle_.intersect(a, b);
     if (!hit) return false;
   }
-  c->info().facet_patch[i] = hit->patch.value;
+  c->info().facet_patch[i] = hit->patch;
   c->info().surface_center[i] = hit->point;
-  n->info().facet_patch[j] = hit->patch.value;
+  n->info().facet_patch[j] = hit->patch;
   n->info().surface_center[j] = hit->point;
   return true;
 }
@@ -191,13 +192,13 @@ double RestrictedComplex::facet_power(Cell_handle c, int i, const Point3& x) con
   return squared_norm(x - to_point3(q)) - q.weight();
 }
 
-bool RestrictedComplex::on_patch(const VertexInfo& v, int patch) const {
-  auto contains = [patch](const std::vector<int>& patches) {
+bool RestrictedComplex::on_patch(const VertexInfo& v, PatchId patch) const {
+  auto contains = [patch](const std::vector<PatchId>& patches) {
     return std::find(patches.begin(), patches.end(), patch) != patches.end();
   };
   switch (v.dim()) {
     case FeatureDim::kPatch:
-      return v.feature.patch().value == patch;
+      return v.feature.patch() == patch;
     case FeatureDim::kCurve:
       return contains(curve_patches_[v.feature.curve().value - 1]);
     case FeatureDim::kCorner:

@@ -28,10 +28,10 @@ class RestrictedComplex {
   bool surface_only() const { return surface_only_; }
 
   /// The patches bounded by each corner and each curve (index = id - 1), for R3.
-  void set_feature_patches(std::vector<std::vector<int>> corner_patches,
-                           std::vector<std::vector<int>> curve_patches);
+  void set_feature_patches(std::vector<std::vector<PatchId>> corner_patches,
+                           std::vector<std::vector<PatchId>> curve_patches);
   /// Whether vertex v lies on patch `patch` (on it, or on a curve/corner bounding it).
-  bool on_patch(const VertexInfo& v, int patch) const;
+  bool on_patch(const VertexInfo& v, PatchId patch) const;
 
   /// Stamps c and computes its orthocenter and label. `from`, when it is a
   /// labeled finite neighbor, lets the oracle label c by a short walk from
@@ -70,8 +70,8 @@ class RestrictedComplex {
   Triangulation tr_;
   std::uint32_t next_stamp_ = 1;
   std::vector<std::uint64_t> live_;               ///< bit s: the cell stamped s still exists
-  std::vector<std::vector<int>> curve_patches_;   ///< index = CurveId - 1
-  std::vector<std::vector<int>> corner_patches_;  ///< index = CornerId - 1
+  std::vector<std::vector<PatchId>> curve_patches_;   ///< index = CurveId - 1
+  std::vector<std::vector<PatchId>> corner_patches_;  ///< index = CornerId - 1
 };
 
 }  // namespace rdmesh::detail

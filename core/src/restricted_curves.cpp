@@ -26,23 +26,15 @@ RestrictedCurves::RestrictedCurves(const DomainOracle& oracle) {
   }
 }
 
-namespace {
-std::vector<int> values(const std::vector<PatchId>& ids) {
-  std::vector<int> out;
-  for (const PatchId& p : ids) out.push_back(p.value);
-  return out;
-}
-}  // namespace
-
-std::vector<std::vector<int>> RestrictedCurves::corner_patches() const {
-  std::vector<std::vector<int>> out;
-  for (const CornerInfo& c : corners_) out.push_back(values(c.patches));
+std::vector<std::vector<PatchId>> RestrictedCurves::corner_patches() const {
+  std::vector<std::vector<PatchId>> out;
+  for (const CornerInfo& c : corners_) out.push_back(c.patches);
   return out;
 }
 
-std::vector<std::vector<int>> RestrictedCurves::curve_patches() const {
-  std::vector<std::vector<int>> out;
-  for (const CurveState& c : curves_) out.push_back(values(c.info.patches));
+std::vector<std::vector<PatchId>> RestrictedCurves::curve_patches() const {
+  std::vector<std::vector<PatchId>> out;
+  for (const CurveState& c : curves_) out.push_back(c.info.patches);
   return out;
 }
 

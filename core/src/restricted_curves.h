@@ -58,9 +58,9 @@ class RestrictedCurves {
   std::vector<CurveState>& curves() { return curves_; }  ///< index = CurveId - 1
   const std::vector<CurveState>& curves() const { return curves_; }
   const std::vector<CornerInfo>& corners() const { return corners_; }  ///< index = CornerId - 1
-  /// The patches each corner bounds, and each curve (index = id - 1), as values.
-  std::vector<std::vector<int>> corner_patches() const;
-  std::vector<std::vector<int>> curve_patches() const;
+  /// The patches each corner bounds, and each curve (index = id - 1).
+  std::vector<std::vector<PatchId>> corner_patches() const;
+  std::vector<std::vector<PatchId>> curve_patches() const;
 
   /// The arcs having vertex v as an endpoint.
   void arcs_of(Vertex_handle v, std::vector<std::pair<int, CurveState::Arc>>& out);

@@ -65,6 +65,9 @@ struct VertexInfo {
   FeatureDim dim() const { return feature.dim(); }
 };
 
+/// CellInfo::facet_patch of a facet that is not in D|S (patch ids start at 1).
+inline constexpr PatchId kNotRestricted{0};
+
 /// The centers of the surface Delaunay balls of a cell's four facets, stored
 /// out of line: only cells with a restricted facet (a few percent of them,
 /// along the surface) need them, and held inline they were 96 of a cell's 256
@@ -107,7 +110,7 @@ struct CellInfo {
   int label = 0;                ///< SubdomainId of the circumcenter (0 outside, infinite cells)
   Point3 circumcenter;          ///< finite cells only
   double squared_radius = 0.0;  ///< finite cells only
-  std::array<int, 4> facet_patch{};  ///< PatchId value of facet i, 0 = not restricted
+  std::array<PatchId, 4> facet_patch{};  ///< patch of facet i, or kNotRestricted
   SurfaceCenters surface_center;     ///< center of facet i's surface Delaunay ball
   /// A crossing of facet `crossing_facet`'s dual edge found while labeling this
   /// cell from the neighbor with stamp `crossing_with` (held in facet_patch and

@@ -48,7 +48,7 @@ TEST(FacetLevel, FacetsOnThePatchWithinTheCriteriaViolateNothing) {
   // A facet not in D|S (an inner one) has no violation either.
   const Cell_handle c = tiny.restricted_facets().front().first;
   for (int i = 0; i < 4; ++i) {
-    if (c->info().facet_patch[i] == 0) {
+    if (c->info().facet_patch[i] == kNotRestricted) {
       EXPECT_FALSE(level.violation(c, i));
     }
   }
@@ -102,7 +102,7 @@ TEST(FacetLevel, TheQueuePopsTheWorstLiveFacetAndDropsDestroyedOnes) {
       continue;
     }
     ++popped;
-    EXPECT_NE(e->cell->info().facet_patch[e->facet], 0);
+    EXPECT_NE(e->cell->info().facet_patch[e->facet], kNotRestricted);
     EXPECT_NEAR(e->priority, kBallR2 / 0.25, 1e-7);
   }
   EXPECT_EQ(popped, 7u);

@@ -58,13 +58,13 @@ TEST(RestrictedComplex, IncrementalBookkeepingEqualsARecomputation) {
       // Both copies of a facet agree.
       ASSERT_EQ(info.facet_patch[i], n->info().facet_patch[j]);
       // D|S: restricted exactly when the dual edge joins two labels.
-      EXPECT_EQ(info.facet_patch[i] != 0, info.label != n->info().label);
-      if (info.facet_patch[i] == 0) continue;
+      EXPECT_EQ(info.facet_patch[i] != kNotRestricted, info.label != n->info().label);
+      if (info.facet_patch[i] == kNotRestricted) continue;
       const Point3 sc = static_cast<const CellInfo&>(info).surface_center[i];
       ASSERT_EQ(sc, static_cast<const CellInfo&>(n->info()).surface_center[j]);
       if (n->info().stamp < info.stamp) continue;  // each facet once below
       ++restricted;
-      ++per_patch[info.facet_patch[i]];
+      ++per_patch[info.facet_patch[i].value];
       // The surface center is on the patch (sphere of radius 0.5 or 1, by patch)...
       const double r = norm(sc);
       EXPECT_TRUE(std::abs(r - 0.5) < 1e-6 || std::abs(r - 1.0) < 1e-6) << r;

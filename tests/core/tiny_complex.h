@@ -52,7 +52,7 @@ struct TinyComplex {
     detail::Triangulation& tr = complex.triangulation();
     for (auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c) {
       for (int i = 0; i < 4; ++i) {
-        if (c->info().facet_patch[i] != 0) out.emplace_back(c, i);
+        if (c->info().facet_patch[i] != detail::kNotRestricted) out.emplace_back(c, i);
       }
     }
     return out;

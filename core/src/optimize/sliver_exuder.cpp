@@ -322,11 +322,12 @@ void check_invariants(const Triangulation& tr) {
     for (int i = 0; i < 4; ++i) {
       const Cell_handle n = c->neighbor(i);
       const int j = n->index(c);
-      const int patch = c->info().facet_patch[i];
+      const PatchId patch = c->info().facet_patch[i];
       if (patch != n->info().facet_patch[j] ||
-          (patch != 0 && !(c->info().surface_center[i] == n->info().surface_center[j])))
+          (patch != kNotRestricted &&
+           !(c->info().surface_center[i] == n->info().surface_center[j])))
         throw InternalError("exudation: the two sides of a facet disagree on its restricted data");
-      if ((patch != 0) != (c->info().label != n->info().label))
+      if ((patch != kNotRestricted) != (c->info().label != n->info().label))
         throw InternalError(
             "exudation: labels differ across a non-restricted facet (or agree "
             "across a restricted one), cell stamp " +

@@ -23,7 +23,8 @@ double cell_cosine(Cell_handle c) {
 
 bool has_restricted_facet(Cell_handle c) {
   const auto& p = c->info().facet_patch;
-  return p[0] != 0 || p[1] != 0 || p[2] != 0 || p[3] != 0;
+  return p[0] != kNotRestricted || p[1] != kNotRestricted || p[2] != kNotRestricted ||
+         p[3] != kNotRestricted;
 }
 
 }  // namespace
@@ -107,13 +108,14 @@ double VertexPerturber::move(Vertex_handle v, const Point3& p, int label) {
         n->info().stamp = next_stamp_++;
         new_cells_.push_back(n);
       } else if (n->info().stamp < first_new &&
-                 (n->info().label != label || n->info().facet_patch[n->index(c)] != 0)) {
+                 (n->info().label != label ||
+                  n->info().facet_patch[n->index(c)] != kNotRestricted)) {
         throw InternalError("perturbation: the re-triangulated region borders another label");
       }
     }
     CellInfo& info = c->info();
     info.label = tr_.is_infinite(c) ? 0 : label;
-    info.facet_patch = {0, 0, 0, 0};
+    info.facet_patch.fill(kNotRestricted);
     if (tr_.is_infinite(c)) continue;
     const Point3 p0 = to_point3(c->vertex(0)->point());
     info.circumcenter =

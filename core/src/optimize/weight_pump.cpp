@@ -77,7 +77,7 @@ void WeightPump::collect_star(Vertex_handle v, const std::vector<Cell_handle>* s
   for (const Cell_handle& c : zone_) {
     const int iv = c->index(v);
     for (int i = 0; i < 4; ++i) {
-      if (i == iv || c->info().facet_patch[i] == 0) continue;
+      if (i == iv || c->info().facet_patch[i] == kNotRestricted) continue;
       const Cell_handle n = c->neighbor(i);
       if (n->info().stamp < c->info().stamp) continue;
       StarFacet f;
@@ -105,7 +105,8 @@ bool WeightPump::absorb(Cell_handle c) {
   if (tr_.is_infinite(c)) return false;
   for (int i = 0; i < 4; ++i) {
     // A restricted facet between c and Z would be inside the new zone.
-    if (c->info().facet_patch[i] != 0 && c->neighbor(i)->tds_data().is_in_conflict()) return false;
+    if (c->info().facet_patch[i] != kNotRestricted && c->neighbor(i)->tds_data().is_in_conflict())
+      return false;
   }
   c->tds_data().mark_in_conflict();
   zone_.push_back(c);
@@ -150,7 +151,7 @@ double WeightPump::boundary_quality(Vertex_handle v, double cutoff, bool measure
       const Cell_handle n = c->neighbor(i);
       if (n->tds_data().is_in_conflict()) continue;
       BoundaryFacet f{c, i, 0, false};
-      f.label = c->info().facet_patch[i] != 0 ? c->info().label : n->info().label;
+      f.label = c->info().facet_patch[i] != kNotRestricted ? c->info().label : n->info().label;
       for (int k = 1; k < 4; ++k)
         f.infinite = f.infinite || tr_.is_infinite(c->vertex((i + k) & 3));
       boundary_.push_back(f);
@@ -332,7 +333,7 @@ bool WeightPump::commit(Vertex_handle v, double weight) {
     CellInfo& info = c->info();
     info.stamp = next_stamp_++;
     info.label = o.label;
-    info.facet_patch = {0, 0, 0, 0};
+    info.facet_patch.fill(kNotRestricted);
     const int k = c->index(v);
     info.facet_patch[k] = o.cell->info().facet_patch[o.index];
     info.surface_center[k] = o.cell->info().surface_center[o.index];

@@ -104,7 +104,7 @@ class WeightPump {
   /// A restricted facet (v, a, b) of the old star, &*a < &*b.
   struct StarFacet {
     Vertex_handle a, b;
-    int patch;
+    PatchId patch;
     Point3 center;
     int label0, label1;
   };
