@@ -217,22 +217,17 @@ bool ProtectingBallsLevel::ball_conflict(Cell_handle c, int i) {
 }
 
 BallRef ProtectingBallsLevel::ball_of(const VertexInfo& info) const {
-  BallRef ref;
-  if (info.dim() == FeatureDim::kCorner) {
-    ref.corner = info.feature.corner().value - 1;
-  } else {
-    const std::vector<BallSample>& s = plan_.curves[info.feature.curve().value - 1].samples;
-    const auto it = std::lower_bound(s.begin(), s.end(), info.t,
-                                     [](const BallSample& b, double t) { return b.t < t; });
-    ref.curve = info.feature.curve().value - 1;
-    ref.index = static_cast<int>(it - s.begin());
-  }
-  return ref;
+  if (info.dim() == FeatureDim::kCorner) return BallRef::at_corner(info.feature.corner().value - 1);
+  const std::size_t curve = info.feature.curve().value - 1;
+  const std::vector<BallSample>& s = plan_.curves[curve].samples;
+  const auto it = std::lower_bound(s.begin(), s.end(), info.t,
+                                   [](const BallSample& b, double t) { return b.t < t; });
+  return BallRef::on_curve(curve, it - s.begin());
 }
 
 void ProtectingBallsLevel::add_conflict(const BallRef& ref) {
   for (BallRef& b : conflicts_) {
-    if (b.curve == ref.curve && b.index == ref.index && b.corner == ref.corner) {
+    if (b.same_ball(ref)) {
       b.factor = std::min(b.factor, ref.factor);
       return;
     }
@@ -242,9 +237,9 @@ void ProtectingBallsLevel::add_conflict(const BallRef& ref) {
 
 void ProtectingBallsLevel::overlap_conflict(Cell_handle c, int i) {
   auto info_of = [&](int j) -> const CurveInfo& { return curves_.curves()[j].info; };
-  // The overlapping pairs of unrelated balls among the facet's vertices.
-  std::array<BallRef, 6> pairs;
-  int n = 0;
+  // The overlapping pairs of unrelated balls among the facet's vertices (a
+  // vector: it allocates only for a facet that has some).
+  std::vector<BallRef> pairs;
   for (int x = 1; x < 4; ++x) {
     const Vertex_handle a = c->vertex((i + x) & 3);
     const double wa = a->point().weight();
@@ -261,13 +256,14 @@ void ProtectingBallsLevel::overlap_conflict(Cell_handle c, int i) {
       const double dist = distance(to_point3(a->point()), to_point3(b->point()));
       if (dist >= need) continue;
       // Down to disjoint at once (B2 for related balls), rather than by halves.
-      pairs[n] = ball_a, pairs[n + 1] = ball_b;
-      pairs[n].factor = pairs[n + 1].factor =
-          std::min(kMaxShrinkFactor, kDisjointMargin * dist / need);
-      n += 2;
+      const double factor = std::min(kMaxShrinkFactor, kDisjointMargin * dist / need);
+      for (const BallRef& ball : {ball_a, ball_b}) {
+        pairs.push_back(ball);
+        pairs.back().factor = factor;
+      }
     }
   }
-  if (n == 0) return;
+  if (pairs.empty()) return;
   // The surface within the facet distance of the centroid, along the normal.
   const Point3 p[3] = {to_point3(c->vertex((i + 1) & 3)->point()),
                        to_point3(c->vertex((i + 2) & 3)->point()),
@@ -278,7 +274,7 @@ void ProtectingBallsLevel::overlap_conflict(Cell_handle c, int i) {
   const Point3 g = (1.0 / 3) * (p[0] + p[1] + p[2]);
   const Point3 reach = (kSurfaceSearchReach * criteria_.facet_distance(g) / len) * normal;
   if (oracle_.intersect(g - reach, g + reach)) return;
-  for (int k = 0; k < n; ++k) add_conflict(pairs[k]);
+  for (const BallRef& ball : pairs) add_conflict(ball);
 }
 
 }  // namespace rdmesh::detail

@@ -229,17 +229,18 @@ void ProtectionPlanner::sample_curve(CurveData& d) {
 }
 
 bool ProtectionPlanner::shrink_ball(const BallRef& b, double factor, bool below_caps) {
-  if (b.curve < 0) {
-    double& r = corner_radius_[b.corner];
+  if (b.is_corner()) {
+    const int q = b.corner();
+    double& r = corner_radius_[q];
     if (factor * r < min_size_) return false;
     r *= factor;
-    corner_clear_[b.corner] = 0;
-    corner_moved_[b.corner] = 1;
-    for (CurveData& d : curves_) d.dirty = d.dirty || d.start == b.corner || d.end == b.corner;
+    corner_clear_[q] = 0;
+    corner_moved_[q] = 1;
+    for (CurveData& d : curves_) d.dirty = d.dirty || d.start == q || d.end == q;
     return true;
   }
-  CurveData& d = curves_[b.curve];
-  const BallSample& s = d.samples[b.index];
+  CurveData& d = curves_[b.curve()];
+  const BallSample& s = d.samples[b.sample()];
   // A cap lower than the caps there now, never below the floor; false when it
   // would change nothing (the ball is as small as it may get). A sample's ball
   // follows the longer of its two steps, so it may exceed the caps at its own
@@ -254,24 +255,25 @@ bool ProtectionPlanner::shrink_ball(const BallRef& b, double factor, bool below_
 }
 
 void ProtectionPlanner::clamp_radius(const BallRef& b, double radius) {
-  if (b.curve >= 0) {
-    CurveData& d = curves_[b.curve];
-    BallSample& s = d.samples[b.index];
+  if (!b.is_corner()) {
+    CurveData& d = curves_[b.curve()];
+    BallSample& s = d.samples[b.sample()];
     s.radius = std::min(s.radius, radius);
-    if (d.c.info.closed && b.index == 0) d.samples.back().radius = s.radius;
+    if (d.c.info.closed && b.sample() == 0) d.samples.back().radius = s.radius;
     return;
   }
-  double& r = corner_radius_[b.corner];
+  const int q = b.corner();
+  double& r = corner_radius_[q];
   r = std::min(r, radius);
-  corner_moved_[b.corner] = 1;
+  corner_moved_[q] = 1;
   for (CurveData& d : curves_) {  // the corner's copies at curve ends
-    if (d.start == b.corner) d.samples.front().radius = r;
-    if (d.end == b.corner) d.samples.back().radius = r;
+    if (d.start == q) d.samples.front().radius = r;
+    if (d.end == q) d.samples.back().radius = r;
   }
 }
 
 double ProtectionPlanner::radius_of(const BallRef& b) const {
-  return b.curve < 0 ? corner_radius_[b.corner] : curves_[b.curve].samples[b.index].radius;
+  return b.is_corner() ? corner_radius_[b.corner()] : curves_[b.curve()].samples[b.sample()].radius;
 }
 
 bool ProtectionPlanner::check_arcs() {
@@ -289,10 +291,10 @@ bool ProtectionPlanner::check_arcs() {
       }
       // Shrink both ends (a corner end is the corner's ball).
       for (std::size_t k : {i, i + 1}) {
-        BallRef ref{static_cast<int>(j), static_cast<int>(k), -1};
-        if (!d.c.info.closed && k == 0) ref = BallRef{-1, 0, d.start};
-        if (!d.c.info.closed && k + 1 == s.size()) ref = BallRef{-1, 0, d.end};
-        if (d.c.info.closed && k + 1 == s.size()) ref.index = 0;
+        // A closed curve's last sample repeats its first.
+        BallRef ref = BallRef::on_curve(j, d.c.info.closed && k + 1 == s.size() ? 0 : k);
+        if (!d.c.info.closed && k == 0) ref = BallRef::at_corner(d.start);
+        if (!d.c.info.closed && k + 1 == s.size()) ref = BallRef::at_corner(d.end);
         changed = shrink_ball(ref, 0.7) || changed;
       }
     }
@@ -303,40 +305,43 @@ bool ProtectionPlanner::check_arcs() {
 std::vector<int> ProtectionPlanner::curves_touching(const BallRef& ball) const {
   std::vector<int> corners;
   std::vector<int> out;
-  if (ball.curve < 0) {
-    corners.push_back(ball.corner);
+  if (ball.is_corner()) {
+    corners.push_back(ball.corner());
   } else {
-    out.push_back(ball.curve);
-    const CurveData& d = curves_[static_cast<std::size_t>(ball.curve)];
+    out.push_back(ball.curve());
+    const CurveData& d = curves_[static_cast<std::size_t>(ball.curve())];
     const int last = static_cast<int>(d.samples.size()) - 1;
-    if (!d.c.info.closed && ball.index <= 1) corners.push_back(d.start);
-    if (!d.c.info.closed && ball.index >= last - 1) corners.push_back(d.end);
+    if (!d.c.info.closed && ball.sample() <= 1) corners.push_back(d.start);
+    if (!d.c.info.closed && ball.sample() >= last - 1) corners.push_back(d.end);
   }
   for (std::size_t j = 0; j < curves_.size(); ++j) {
     const bool at_corner = std::find_if(corners.begin(), corners.end(), [&](int c) {
                              return c >= 0 && (curves_[j].start == c || curves_[j].end == c);
                            }) != corners.end();
-    if (at_corner && static_cast<int>(j) != ball.curve) out.push_back(static_cast<int>(j));
+    const bool own = !ball.is_corner() && static_cast<int>(j) == ball.curve();
+    if (at_corner && !own) out.push_back(static_cast<int>(j));
   }
   return out;
 }
 
 std::string ProtectionPlanner::name(const BallRef& b) const {
-  return b.curve < 0 ? feature_name(CornerId{b.corner + 1})
-                     : feature_name(curves_[b.curve].c.info.id, curves_[b.curve].c.info.name);
+  if (b.is_corner()) return feature_name(CornerId{b.corner() + 1});
+  const CurveInfo& info = curves_[b.curve()].c.info;
+  return feature_name(info.id, info.name);
 }
 
 double ProtectionPlanner::feature_distance(const BallRef& b, const Point3& x) const {
-  if (b.curve < 0) return distance(x, corners_[b.corner].point);
-  const CurveData& d = curves_[b.curve];
+  if (b.is_corner()) return distance(x, corners_[b.corner()].point);
+  const CurveData& d = curves_[b.curve()];
   const std::vector<BallSample>& s = d.samples;
   const int last = static_cast<int>(s.size()) - 1;
   auto arc = [&](int i, int j) {
     return distance(x, d.c.curve->point(d.c.curve->closest(x, s[i].t, s[j].t)));
   };
-  double best = arc(std::max(0, b.index - 1), std::min(last, b.index + 1));
+  const int i = b.sample();
+  double best = arc(std::max(0, i - 1), std::min(last, i + 1));
   // A closed curve's first sample is also its last: the arc before it too.
-  if (d.c.info.closed && b.index == 0 && last >= 1) best = std::min(best, arc(last - 1, last));
+  if (d.c.info.closed && i == 0 && last >= 1) best = std::min(best, arc(last - 1, last));
   return best;
 }
 
@@ -345,31 +350,33 @@ bool ProtectionPlanner::separate_balls(bool record) {
   // (a closed curve's first sample stands for its repeated last one).
   std::vector<Ball> balls;
   for (std::size_t q = 0; q < corners_.size(); ++q) {
-    balls.push_back({corners_[q].point, corner_radius_[q], BallRef{-1, 0, static_cast<int>(q)},
+    balls.push_back({corners_[q].point, corner_radius_[q], BallRef::at_corner(q),
                      record || corner_moved_[q] != 0});
   }
   for (std::size_t j = 0; j < curves_.size(); ++j) {
     const std::vector<BallSample>& s = curves_[j].samples;
     const std::size_t first = curves_[j].c.info.closed ? 0 : 1;
     for (std::size_t i = first; i + 1 < s.size(); ++i) {
-      balls.push_back({s[i].point, s[i].radius, BallRef{static_cast<int>(j), static_cast<int>(i)},
-                       record || curves_[j].moved});
+      balls.push_back(
+          {s[i].point, s[i].radius, BallRef::on_curve(j, i), record || curves_[j].moved});
     }
   }
   if (balls.size() < 2) return false;
   auto adjacent = [&](const BallRef& a, const BallRef& b) {
-    if (a.curve >= 0 && a.curve == b.curve) {
-      const int n = static_cast<int>(curves_[a.curve].samples.size()) - 1;  // distinct samples
-      const int d = std::abs(a.index - b.index);
-      return d == 1 || (curves_[a.curve].c.info.closed && d == n - 1);
+    if (!a.is_corner() && !b.is_corner() && a.curve() == b.curve()) {
+      const CurveData& d = curves_[a.curve()];
+      const int n = static_cast<int>(d.samples.size()) - 1;  // distinct samples
+      const int gap = std::abs(a.sample() - b.sample());
+      return gap == 1 || (d.c.info.closed && gap == n - 1);
     }
-    if (a.curve < 0 && b.curve < 0) return false;
-    const BallRef& q = a.curve < 0 ? a : b;
-    const BallRef& s = a.curve < 0 ? b : a;
-    const CurveData& d = curves_[s.curve];
+    if (a.is_corner() == b.is_corner()) return false;
+    const BallRef& q = a.is_corner() ? a : b;
+    const BallRef& s = a.is_corner() ? b : a;
+    const CurveData& d = curves_[s.curve()];
     if (d.c.info.closed) return false;
     const int last = static_cast<int>(d.samples.size()) - 2;
-    return (d.start == q.corner && s.index == 1) || (d.end == q.corner && s.index == last);
+    return (d.start == q.corner() && s.sample() == 1) ||
+           (d.end == q.corner() && s.sample() == last);
   };
   // A hierarchical hash grid: a ball lives at the level whose cells are at
   // least its reach's diameter, by its centre only. Each ball is tested
@@ -502,8 +509,7 @@ bool ProtectionPlanner::keep_off_patches() {
   for (std::size_t q = 0; q < corners_.size(); ++q) {
     if (corner_clear_[q]) continue;
     corner_clear_[q] = 1;
-    keep_off(BallRef{-1, 0, static_cast<int>(q)}, corners_[q].point, corner_radius_[q],
-             corners_[q].patches);
+    keep_off(BallRef::at_corner(q), corners_[q].point, corner_radius_[q], corners_[q].patches);
   }
   for (std::size_t j = 0; j < curves_.size(); ++j) {
     CurveData& d = curves_[j];
@@ -511,8 +517,7 @@ bool ProtectionPlanner::keep_off_patches() {
     d.clear = true;
     const std::size_t first = d.c.info.closed ? 0 : 1;
     for (std::size_t i = first; i + 1 < d.samples.size(); ++i) {
-      keep_off(BallRef{static_cast<int>(j), static_cast<int>(i)}, d.samples[i].point,
-               d.samples[i].radius, d.c.info.patches);
+      keep_off(BallRef::on_curve(j, i), d.samples[i].point, d.samples[i].radius, d.c.info.patches);
     }
   }
   return changed;
@@ -552,11 +557,12 @@ ProtectionPlan ProtectionPlanner::plan() {
 bool ProtectionPlanner::shrink(const std::vector<BallRef>& balls, ProtectionPlan& plan) {
   bool changed = false;
   for (const BallRef& b : balls) {
-    if (b.curve >= 0 && (b.curve >= static_cast<int>(curves_.size()) || b.index < 0 ||
-                         b.index >= static_cast<int>(curves_[b.curve].samples.size()))) {
-      continue;
-    }
-    if (b.curve < 0 && (b.corner < 0 || b.corner >= static_cast<int>(corners_.size()))) continue;
+    const bool known = b.is_corner()
+                           ? b.corner() >= 0 && b.corner() < static_cast<int>(corners_.size())
+                           : b.curve() >= 0 && b.curve() < static_cast<int>(curves_.size()) &&
+                                 b.sample() >= 0 &&
+                                 b.sample() < static_cast<int>(curves_[b.curve()].samples.size());
+    if (!known) continue;
     changed = shrink_ball(b, b.factor) || changed;
   }
   if (!changed) return false;

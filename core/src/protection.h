@@ -42,12 +42,16 @@
 #pragma once
 
 #include <algorithm>
+#include <cstdint>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "deadline.h"
 #include "rdmesh/criteria.h"
 #include "rdmesh/curve.h"
+#include "rdmesh/debug_assert.h"
 #include "rdmesh/oracle.h"
 #include "size_caps.h"
 
@@ -69,13 +73,46 @@ struct CurveProtection {
   std::vector<BallSample> samples;
 };
 
-/// A ball to shrink: sample `index` of curve `curve` (index into the curve
-/// table), or corner `corner` (index into the corner table) when curve < 0.
-struct BallRef {
-  int curve = -1;
-  int index = 0;
-  int corner = -1;
+/// A ball of the plan: a corner's (by its index in the corner table) or a
+/// curve sample's (by the curve's index in the curve table and the sample's
+/// index in its samples). Which of the two is explicit, and each index is read
+/// through the accessor of its kind, which checks it (RDMESH_DEBUG_ASSERT).
+class BallRef {
+ public:
+  static BallRef at_corner(std::size_t corner) {
+    return BallRef(Kind::kCorner, static_cast<int>(corner), 0);
+  }
+  static BallRef on_curve(std::size_t curve, std::size_t sample) {
+    return BallRef(Kind::kCurveSample, static_cast<int>(curve), static_cast<int>(sample));
+  }
+
+  bool is_corner() const { return kind_ == Kind::kCorner; }
+  int corner() const {
+    RDMESH_DEBUG_ASSERT(is_corner(), "the corner of a curve sample's ball");
+    return feature_;
+  }
+  int curve() const {
+    RDMESH_DEBUG_ASSERT(!is_corner(), "the curve of a corner's ball");
+    return feature_;
+  }
+  int sample() const {
+    RDMESH_DEBUG_ASSERT(!is_corner(), "the sample index of a corner's ball");
+    return sample_;
+  }
+  /// Whether both name the same ball (whatever their factors).
+  bool same_ball(const BallRef& o) const {
+    return kind_ == o.kind_ && feature_ == o.feature_ && sample_ == o.sample_;
+  }
+
   double factor = 0.5;  ///< shrink(): the ball's new size, as a fraction of its size
+
+ private:
+  enum class Kind : std::int8_t { kCorner, kCurveSample };
+  BallRef(Kind kind, int feature, int sample) : kind_(kind), feature_(feature), sample_(sample) {}
+
+  Kind kind_;
+  int feature_;  ///< corner or curve index
+  int sample_;   ///< sample index on the curve (0 for a corner)
 };
 
 /// Whether B2 asks balls a and b to be disjoint, rather than only clear of each
@@ -83,10 +120,10 @@ struct BallRef {
 /// curve the corner ends. `info_of(j)` is the CurveInfo of curve index j.
 template <class InfoOf>
 bool related_balls(const BallRef& a, const BallRef& b, InfoOf&& info_of) {
-  if (a.curve >= 0 && b.curve >= 0) return a.curve == b.curve;
-  if (a.curve < 0 && b.curve < 0) return false;
-  const int corner = (a.curve < 0 ? a : b).corner;
-  const CurveInfo& curve = info_of((a.curve < 0 ? b : a).curve);
+  if (!a.is_corner() && !b.is_corner()) return a.curve() == b.curve();
+  if (a.is_corner() && b.is_corner()) return false;
+  const int corner = (a.is_corner() ? a : b).corner();
+  const CurveInfo& curve = info_of((a.is_corner() ? b : a).curve());
   return !curve.closed && (curve.start.value - 1 == corner || curve.end.value - 1 == corner);
 }
 

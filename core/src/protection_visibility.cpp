@@ -120,7 +120,7 @@ void ProtectionPlanner::keep_all_visible() {
   for (std::size_t q = 0; q < corners_.size(); ++q) {
     centers.push_back(corners_[q].point);
     radii.push_back(corner_radius_[q]);
-    refs.push_back(BallRef{-1, 0, static_cast<int>(q)});
+    refs.push_back(BallRef::at_corner(q));
   }
   for (std::size_t j = 0; j < curves_.size(); ++j) {
     const std::vector<BallSample>& s = curves_[j].samples;
@@ -128,7 +128,7 @@ void ProtectionPlanner::keep_all_visible() {
     for (std::size_t i = first; i + 1 < s.size(); ++i) {
       centers.push_back(s[i].point);
       radii.push_back(s[i].radius);
-      refs.push_back(BallRef{static_cast<int>(j), static_cast<int>(i)});
+      refs.push_back(BallRef::on_curve(j, i));
     }
   }
   // Each ball once (a corner's copies at its curves' ends and a closed

@@ -262,7 +262,7 @@ TEST(Protection, ShrinkMakesTheBallsAroundASampleSmaller) {
   const Point3 where = before.curves[0].samples[k].point;
   const double radius = before.curves[0].samples[k].radius;
   ProtectionPlan after = before;
-  ASSERT_TRUE(planner.shrink({BallRef{0, static_cast<int>(k), -1}}, after));
+  ASSERT_TRUE(planner.shrink({BallRef::on_curve(0, k)}, after));
   expect_protected(l, after, c);
   double nearest = HUGE_VAL, r = 0;
   for (const BallSample& s : after.curves[0].samples) {
