@@ -8,12 +8,22 @@
 #include <cstdint>
 #include <limits>
 #include <map>
+#include <optional>
 
 #include "rdmesh/errors.h"
 #include "rdmesh/feature_name.h"
 #include "simplex_geometry.h"
 
 namespace rdmesh::detail {
+
+/// A ball of the plan, for the separation test.
+struct PlanBall {
+  Point3 center;
+  double radius;
+  BallRef ref;
+  bool moved;  ///< since the last separation pass
+};
+
 namespace {
 
 /// A fixed pseudo-random number in [-1, 1] for sample k of curve j.
@@ -27,12 +37,92 @@ double jitter(std::size_t j, std::size_t k) {
   return static_cast<double>(x >> 11) / static_cast<double>(1ULL << 52) - 1.0;
 }
 
-/// A ball of the plan, for the separation test.
-struct Ball {
-  Point3 center;
-  double radius;
-  BallRef ref;
-  bool moved;  ///< since the last separation pass
+/// A hierarchical hash grid of the plan's balls for the B2 test: a ball lives
+/// at the level whose cells are at least its reach's diameter, by its centre
+/// only. Each ball is tested against the balls of its own level and of the
+/// coarser ones in the cells near it, so every pair is seen once, from its
+/// smaller ball.
+///
+/// Two grids: every ball, and the balls that moved. A moved ball looks for
+/// partners among all, an unmoved one among the moved only: each pair with a
+/// moved ball is still seen once (from its smaller ball, or from its first one
+/// at the same level), a pair of unmoved balls is not looked at. Per level,
+/// (cell key, ball) pairs sorted: one allocation per level, and a cell's balls
+/// in ball order.
+class BallGrid {
+ public:
+  explicit BallGrid(const std::vector<PlanBall>& balls) : balls_(balls), level_(balls.size()) {
+    constexpr double kGap = ProtectionPlanner::kGap;
+    double smallest = std::numeric_limits<double>::infinity();
+    for (const PlanBall& b : balls) smallest = std::min(smallest, b.radius);
+    base_ = std::max(2 * (1 + kGap) * smallest, 1e-300);
+    for (std::size_t k = 0; k < balls.size(); ++k) {
+      level_[k] = std::max(
+          0, static_cast<int>(std::ceil(std::log2(2 * (1 + kGap) * balls[k].radius / base_))));
+      const double cell = std::ldexp(base_, level_[k]);
+      const Point3& c = balls[k].center;
+      const std::uint64_t where = key(static_cast<std::int64_t>(std::floor(c.x / cell)),
+                                      static_cast<std::int64_t>(std::floor(c.y / cell)),
+                                      static_cast<std::int64_t>(std::floor(c.z / cell)));
+      all_[level_[k]].emplace_back(where, static_cast<int>(k));
+      if (balls[k].moved) moved_[level_[k]].emplace_back(where, static_cast<int>(k));
+    }
+    for (Grid* grid : {&all_, &moved_}) {
+      for (auto& [lvl, cells] : *grid) std::sort(cells.begin(), cells.end());
+    }
+  }
+
+  /// Calls visit(other) for every ball `other` that ball k is tested against,
+  /// in a fixed order.
+  template <class Visit>
+  void for_each_partner(std::size_t k, Visit&& visit) const {
+    const PlanBall& b = balls_[k];
+    const Grid& grids = b.moved ? all_ : moved_;
+    for (auto g = grids.lower_bound(level_[k]); g != grids.end(); ++g) {
+      const double cell = std::ldexp(base_, g->first);
+      const double reach = (1 + ProtectionPlanner::kGap) * b.radius + 0.5 * cell;
+      const double c[3] = {b.center.x, b.center.y, b.center.z};
+      std::int64_t lo[3], hi[3];
+      for (int axis = 0; axis < 3; ++axis) {
+        lo[axis] = static_cast<std::int64_t>(std::floor((c[axis] - reach) / cell));
+        hi[axis] = static_cast<std::int64_t>(std::floor((c[axis] + reach) / cell));
+      }
+      for (std::int64_t x = lo[0]; x <= hi[0]; ++x) {
+        for (std::int64_t y = lo[1]; y <= hi[1]; ++y) {
+          for (std::int64_t z = lo[2]; z <= hi[2]; ++z) {
+            visit_cell(k, g->second, key(x, y, z), visit);
+          }
+        }
+      }
+    }
+  }
+
+ private:
+  using Cells = std::vector<std::pair<std::uint64_t, int>>;
+  using Grid = std::map<int, Cells>;
+
+  static std::uint64_t key(std::int64_t x, std::int64_t y, std::int64_t z) {
+    return (static_cast<std::uint64_t>(x & 0x1fffff) << 42) |
+           (static_cast<std::uint64_t>(y & 0x1fffff) << 21) |
+           static_cast<std::uint64_t>(z & 0x1fffff);
+  }
+
+  template <class Visit>
+  void visit_cell(std::size_t k, const Cells& cells, std::uint64_t where, Visit& visit) const {
+    auto here = std::lower_bound(cells.begin(), cells.end(),
+                                 std::make_pair(where, std::numeric_limits<int>::min()));
+    for (; here != cells.end() && here->first == where; ++here) {
+      const int other = here->second;
+      // Same level: each pair once, from its first ball.
+      if (level_[other] == level_[k] && other <= static_cast<int>(k)) continue;
+      visit(static_cast<std::size_t>(other));
+    }
+  }
+
+  const std::vector<PlanBall>& balls_;
+  double base_ = 0;
+  std::vector<int> level_;
+  Grid all_, moved_;
 };
 
 }  // namespace
@@ -345,10 +435,10 @@ double ProtectionPlanner::feature_distance(const BallRef& b, const Point3& x) co
   return best;
 }
 
-bool ProtectionPlanner::separate_balls(bool record) {
+std::vector<PlanBall> ProtectionPlanner::separation_balls(bool record) const {
   // Every ball once: corners, then the samples of each curve between its ends
   // (a closed curve's first sample stands for its repeated last one).
-  std::vector<Ball> balls;
+  std::vector<PlanBall> balls;
   for (std::size_t q = 0; q < corners_.size(); ++q) {
     balls.push_back({corners_[q].point, corner_radius_[q], BallRef::at_corner(q),
                      record || corner_moved_[q] != 0});
@@ -361,127 +451,78 @@ bool ProtectionPlanner::separate_balls(bool record) {
           {s[i].point, s[i].radius, BallRef::on_curve(j, i), record || curves_[j].moved});
     }
   }
+  return balls;
+}
+
+bool ProtectionPlanner::consecutive_balls(const BallRef& a, const BallRef& b) const {
+  if (!a.is_corner() && !b.is_corner() && a.curve() == b.curve()) {
+    const CurveData& d = curves_[a.curve()];
+    const int n = static_cast<int>(d.samples.size()) - 1;  // distinct samples
+    const int gap = std::abs(a.sample() - b.sample());
+    return gap == 1 || (d.c.info.closed && gap == n - 1);
+  }
+  if (a.is_corner() == b.is_corner()) return false;
+  const BallRef& q = a.is_corner() ? a : b;
+  const BallRef& s = a.is_corner() ? b : a;
+  const CurveData& d = curves_[s.curve()];
+  if (d.c.info.closed) return false;
+  const int last = static_cast<int>(d.samples.size()) - 2;
+  return (d.start == q.corner() && s.sample() == 1) || (d.end == q.corner() && s.sample() == last);
+}
+
+std::optional<ProtectionPlanner::PairShrink> ProtectionPlanner::pair_violation(
+    const PlanBall& b, const PlanBall& o) const {
+  const double dist = distance(b.center, o.center);
+  const double need = disjoint_distance(b.radius, o.radius);
+  if (dist >= need || consecutive_balls(b.ref, o.ref)) return std::nullopt;
+  const bool related =
+      related_balls(b.ref, o.ref, [&](int j) -> const CurveInfo& { return curves_[j].c.info; });
+  if (related) {
+    const double f = 0.95 * dist / need;
+    return PairShrink{f, f};
+  }
+  // Unrelated features: overlapping balls are fine while each stays clear of
+  // the other's feature; only one that does not shrinks.
+  const double fb = feature_distance(o.ref, b.center) / ((1 + kGap) * b.radius);
+  const double fo = feature_distance(b.ref, o.center) / ((1 + kGap) * o.radius);
+  if (fb >= 1 && fo >= 1) return std::nullopt;
+  return PairShrink{fb < 1 ? 0.95 * fb : 1.0, fo < 1 ? 0.95 * fo : 1.0};
+}
+
+void ProtectionPlanner::record_unresolved(const PlanBall& b, const PlanBall& o) {
+  // Unresolved: at least neither ball may hold the other's centre.
+  const double dist = distance(b.center, o.center);
+  for (const BallRef& r : {b.ref, o.ref}) clamp_radius(r, 0.95 * dist);
+  ++unresolved_pairs_;
+  for (const BallRef& r : {b.ref, o.ref}) {
+    for (const int j : curves_touching(r)) unresolved_curve_[j] = 1;
+  }
+  const std::string what = name(b.ref) + " near " + name(o.ref);
+  if (unresolved_.size() < 20 &&
+      std::find(unresolved_.begin(), unresolved_.end(), what) == unresolved_.end()) {
+    unresolved_.push_back(what);
+  }
+}
+
+bool ProtectionPlanner::separate_balls(bool record) {
+  const std::vector<PlanBall> balls = separation_balls(record);
   if (balls.size() < 2) return false;
-  auto adjacent = [&](const BallRef& a, const BallRef& b) {
-    if (!a.is_corner() && !b.is_corner() && a.curve() == b.curve()) {
-      const CurveData& d = curves_[a.curve()];
-      const int n = static_cast<int>(d.samples.size()) - 1;  // distinct samples
-      const int gap = std::abs(a.sample() - b.sample());
-      return gap == 1 || (d.c.info.closed && gap == n - 1);
-    }
-    if (a.is_corner() == b.is_corner()) return false;
-    const BallRef& q = a.is_corner() ? a : b;
-    const BallRef& s = a.is_corner() ? b : a;
-    const CurveData& d = curves_[s.curve()];
-    if (d.c.info.closed) return false;
-    const int last = static_cast<int>(d.samples.size()) - 2;
-    return (d.start == q.corner() && s.sample() == 1) ||
-           (d.end == q.corner() && s.sample() == last);
-  };
-  // A hierarchical hash grid: a ball lives at the level whose cells are at
-  // least its reach's diameter, by its centre only. Each ball is tested
-  // against the balls of its own level and of the coarser ones in the cells
-  // near it, so every pair is seen once, from its smaller ball.
-  double smallest = std::numeric_limits<double>::infinity();
-  for (const Ball& b : balls) smallest = std::min(smallest, b.radius);
-  const double base = std::max(2 * (1 + kGap) * smallest, 1e-300);
-  auto level_of = [&](double radius) {
-    return std::max(0, static_cast<int>(std::ceil(std::log2(2 * (1 + kGap) * radius / base))));
-  };
-  auto key = [](std::int64_t x, std::int64_t y, std::int64_t z) {
-    return (static_cast<std::uint64_t>(x & 0x1fffff) << 42) |
-           (static_cast<std::uint64_t>(y & 0x1fffff) << 21) |
-           static_cast<std::uint64_t>(z & 0x1fffff);
-  };
-  // Two grids: every ball, and the balls that moved. A moved ball looks for
-  // partners among all, an unmoved one among the moved only: each pair with a
-  // moved ball is still seen once (from its smaller ball, or from its first
-  // one at the same level), a pair of unmoved balls is not looked at.
-  // Per level, (cell key, ball) pairs sorted: one allocation per level, and
-  // a cell's balls in ball order.
-  using Grid = std::map<int, std::vector<std::pair<std::uint64_t, int>>>;
-  std::vector<int> level(balls.size());
-  Grid all, moved;
-  for (std::size_t k = 0; k < balls.size(); ++k) {
-    level[k] = level_of(balls[k].radius);
-    const double cell = std::ldexp(base, level[k]);
-    const Point3& c = balls[k].center;
-    const std::uint64_t where = key(static_cast<std::int64_t>(std::floor(c.x / cell)),
-                                    static_cast<std::int64_t>(std::floor(c.y / cell)),
-                                    static_cast<std::int64_t>(std::floor(c.z / cell)));
-    all[level[k]].emplace_back(where, static_cast<int>(k));
-    if (balls[k].moved) moved[level[k]].emplace_back(where, static_cast<int>(k));
-  }
-  for (Grid* grid : {&all, &moved}) {
-    for (auto& [lvl, cells] : *grid) std::sort(cells.begin(), cells.end());
-  }
+  const BallGrid grid(balls);
   std::vector<double> factor(balls.size(), 1.0);
   bool conflict = false;
   for (std::size_t k = 0; k < balls.size(); ++k) {
     deadline_.check(Deadline::kCheckEvery);
-    const Ball& b = balls[k];
-    const Grid& grids = b.moved ? all : moved;
-    for (auto g = grids.lower_bound(level[k]); g != grids.end(); ++g) {
-      const double cell = std::ldexp(base, g->first);
-      const double reach = (1 + kGap) * b.radius + 0.5 * cell;
-      const double c[3] = {b.center.x, b.center.y, b.center.z};
-      std::int64_t lo[3], hi[3];
-      for (int axis = 0; axis < 3; ++axis) {
-        lo[axis] = static_cast<std::int64_t>(std::floor((c[axis] - reach) / cell));
-        hi[axis] = static_cast<std::int64_t>(std::floor((c[axis] + reach) / cell));
+    grid.for_each_partner(k, [&](std::size_t other) {
+      const std::optional<PairShrink> shrink = pair_violation(balls[k], balls[other]);
+      if (!shrink) return;
+      conflict = true;
+      if (record) {
+        record_unresolved(balls[k], balls[other]);
+        return;
       }
-      for (std::int64_t x = lo[0]; x <= hi[0]; ++x) {
-        for (std::int64_t y = lo[1]; y <= hi[1]; ++y) {
-          for (std::int64_t z = lo[2]; z <= hi[2]; ++z) {
-            const std::uint64_t where = key(x, y, z);
-            auto here = std::lower_bound(g->second.begin(), g->second.end(),
-                                         std::make_pair(where, std::numeric_limits<int>::min()));
-            for (; here != g->second.end() && here->first == where; ++here) {
-              const int other = here->second;
-              // Same level: each pair once, from its first ball.
-              if (level[other] == level[k] && other <= static_cast<int>(k)) continue;
-              const Ball& o = balls[other];
-              const double dist = distance(b.center, o.center);
-              const double need = disjoint_distance(b.radius, o.radius);
-              if (dist >= need || adjacent(b.ref, o.ref)) continue;
-              // Unrelated features: overlapping balls are fine while each
-              // stays clear of the other's feature; only one that does not shrinks.
-              double fb = 1, fo = 1;
-              const bool unrelated = !related_balls(
-                  b.ref, o.ref, [&](int j) -> const CurveInfo& { return curves_[j].c.info; });
-              if (unrelated) {
-                fb = feature_distance(o.ref, b.center) / ((1 + kGap) * b.radius);
-                fo = feature_distance(b.ref, o.center) / ((1 + kGap) * o.radius);
-                if (fb >= 1 && fo >= 1) continue;
-              }
-              conflict = true;
-              if (record) {
-                // Unresolved: at least neither ball may hold the other's centre.
-                for (const BallRef& r : {b.ref, o.ref}) clamp_radius(r, 0.95 * dist);
-                ++unresolved_pairs_;
-                for (const BallRef& r : {b.ref, o.ref}) {
-                  for (const int j : curves_touching(r)) unresolved_curve_[j] = 1;
-                }
-                const std::string what = name(b.ref) + " near " + name(o.ref);
-                if (unresolved_.size() < 20 &&
-                    std::find(unresolved_.begin(), unresolved_.end(), what) == unresolved_.end()) {
-                  unresolved_.push_back(what);
-                }
-                continue;
-              }
-              if (unrelated) {
-                if (fb < 1) factor[k] = std::min(factor[k], 0.95 * fb);
-                if (fo < 1) factor[other] = std::min(factor[other], 0.95 * fo);
-                continue;
-              }
-              const double f = 0.95 * dist / need;
-              factor[k] = std::min(factor[k], f);
-              factor[other] = std::min(factor[other], f);
-            }
-          }
-        }
-      }
-    }
+      factor[k] = std::min(factor[k], shrink->first);
+      factor[other] = std::min(factor[other], shrink->second);
+    });
   }
   std::fill(corner_moved_.begin(), corner_moved_.end(), 0);
   for (CurveData& d : curves_) d.moved = false;

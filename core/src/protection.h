@@ -143,6 +143,9 @@ struct ProtectionPlan {
   double min_radius = 0;
 };
 
+/// A ball of the plan as the separation pass sees it (protection.cpp).
+struct PlanBall;
+
 /// One curve as the planner sees it.
 struct ProtectedCurve {
   CurveInfo info;
@@ -232,6 +235,17 @@ class ProtectionPlanner {
   /// that moved since the last call are tested, but all with `record`, which
   /// only records the violating pairs as unresolved.
   bool separate_balls(bool record);
+  /// Every ball once, for separate_balls(): the corners, then each curve's
+  /// samples between its ends; all count as moved with `record`.
+  std::vector<PlanBall> separation_balls(bool record) const;
+  /// Whether a and b are consecutive on a curve (B1 wants them to overlap).
+  bool consecutive_balls(const BallRef& a, const BallRef& b) const;
+  /// The sizes (B2) asks of a pair's two balls, as fractions of theirs (1: unchanged).
+  using PairShrink = std::pair<double, double>;
+  /// What (B2) asks of balls b and o, or nullopt when they satisfy it.
+  std::optional<PairShrink> pair_violation(const PlanBall& b, const PlanBall& o) const;
+  /// Records b and o as a pair left violating (B2) at the minimum size.
+  void record_unresolved(const PlanBall& b, const PlanBall& o);
   /// Shrinks balls that come within kClearance radii of a patch their feature
   /// does not bound (balls not checked since they last changed); true if any changed.
   bool keep_off_patches();
