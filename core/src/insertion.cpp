@@ -7,11 +7,6 @@
 
 namespace rdmesh::detail {
 
-namespace {
-/// RefinementStats::guard_features names at most this many pairs of features.
-constexpr std::size_t kGuardFeaturesListed = 20;
-}  // namespace
-
 Insertion::Insertion(RestrictedComplex& complex, const RestrictedCurves& curves, double min_size,
                      RefinementStats& stats)
     : complex_(complex),
@@ -55,7 +50,7 @@ Vertex_handle Insertion::insert(const Weighted_point& p, const VertexInfo& info)
 
 void Insertion::record_guard(const VertexInfo& candidate, const VertexInfo& nearest) {
   ++stats_.guard_rejections;
-  if (stats_.guard_features.size() >= kGuardFeaturesListed) return;
+  if (stats_.guard_features.size() >= RefinementStats::kMaxListed) return;
   const std::string what = curves_.describe(candidate) + " near " + curves_.describe(nearest);
   auto& list = stats_.guard_features;
   if (std::find(list.begin(), list.end(), what) == list.end()) list.push_back(what);

@@ -64,7 +64,7 @@ void record_protection(const detail::ProtectionPlanner& planner, const detail::P
   }
   for (const int j : below) stats.curves_below_min_size.push_back(CurveId(j + 1));
   for (const detail::BallRef& b : conflicts) {
-    if (stats.protection_features.size() >= 20) break;
+    if (stats.protection_features.size() >= RefinementStats::kMaxListed) break;
     const std::string what = planner.name(b) + " reaches a patch it does not bound";
     if (std::find(stats.protection_features.begin(), stats.protection_features.end(), what) ==
         stats.protection_features.end()) {

@@ -12,6 +12,7 @@
 
 #include "rdmesh/errors.h"
 #include "rdmesh/feature_name.h"
+#include "rdmesh/mesher.h"
 #include "simplex_geometry.h"
 
 namespace rdmesh::detail {
@@ -498,7 +499,7 @@ void ProtectionPlanner::record_unresolved(const PlanBall& b, const PlanBall& o) 
     for (const int j : curves_touching(r)) unresolved_curve_[j] = 1;
   }
   const std::string what = name(b.ref) + " near " + name(o.ref);
-  if (unresolved_.size() < 20 &&
+  if (unresolved_.size() < RefinementStats::kMaxListed &&
       std::find(unresolved_.begin(), unresolved_.end(), what) == unresolved_.end()) {
     unresolved_.push_back(what);
   }

@@ -131,8 +131,8 @@ struct ProtectionPlan {
   std::vector<CurveProtection> curves;  ///< index = CurveId - 1
   std::vector<double> corner_radius;    ///< index = CornerId - 1
   /// Pairs of balls still violating (B2) when they reached the minimum size,
-  /// named "curve A near curve B" (distinct, at most 20). Both balls of such
-  /// a pair are cut so that neither holds the other's centre (hiding it).
+  /// named "curve A near curve B" (distinct, at most RefinementStats::kMaxListed). Both balls of
+  /// such a pair are cut so that neither holds the other's centre (hiding it).
   std::vector<std::string> unresolved;
   std::size_t unresolved_pairs = 0;
   /// Curves (indices) with a ball in such a pair: closer to another feature

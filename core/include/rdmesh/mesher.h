@@ -74,6 +74,10 @@ const char* phase_name(MeshingPhase phase);
 
 /// What refinement did, for the report.
 struct RefinementStats {
+  /// The most entries a list of features below holds (guard_features,
+  /// protection_features): a report names examples, not every pair.
+  static constexpr std::size_t kMaxListed = 20;
+
   std::size_t initial_points = 0;
   std::size_t inserted_edge_centers = 0;   ///< points inserted on curves by R1/R2
   std::size_t inserted_facet_centers = 0;  ///< points inserted by R3/R4
@@ -82,7 +86,7 @@ struct RefinementStats {
   std::size_t guard_rejections = 0;        ///< refinement points refused by the minimum-size guard
   bool guard_fired() const { return guard_rejections > 0; }
   /// The features involved in guard rejections, e.g. "curve 2 near patch 3"
-  /// (distinct pairs, at most 20).
+  /// (distinct pairs, at most kMaxListed).
   std::vector<std::string> guard_features;
   /// Restricted edges left out of the output because an endpoint is in no tetrahedron.
   std::size_t unmeshed_feature_edges = 0;
@@ -97,7 +101,7 @@ struct RefinementStats {
   int protection_restarts = 0;
   /// Pairs of balls still closer than the protection asks after their curve
   /// pieces reached the minimum size, plus balls still reaching into a patch
-  /// after the last restart; the features involved (at most 20).
+  /// after the last restart; the features involved (at most kMaxListed).
   std::size_t protection_conflicts = 0;
   std::vector<std::string> protection_features;
   /// Curves lying closer to another feature than the minimum size lets the
