@@ -124,6 +124,13 @@ void ParametricCurve::build_table() {
     const double whole = distance(gamma_(params_[i]), gamma_(params_[i + 1]));
     cumulative_.push_back(cumulative_.back() + integrate(params_[i], params_[i + 1], whole, 0));
   }
+  if (!std::isfinite(total_length())) {
+    double largest = 0;
+    for (const Point3& c : {extent.lo, extent.hi})
+      largest = std::max({largest, std::fabs(c.x), std::fabs(c.y), std::fabs(c.z)});
+    throw InputError("its arc length is not finite: coordinates up to " + number(largest) +
+                     " overflow its derivative");
+  }
   closed_ = distance(first, prev) <= 1e-10 * std::max(extent.diagonal(), total_length());
 }
 
@@ -181,7 +188,9 @@ double ParametricCurve::integrate(double a, double b, double whole, int depth) c
   const double m = 0.5 * (a + b);
   const double one = gauss(a, b), two = gauss(a, m) + gauss(m, b);
   const double tol = std::max(kRelativeLength * std::max(whole, std::fabs(two)), noise_);
-  if (std::fabs(one - two) <= tol || depth >= 12) {
+  // A speed that overflows (coordinates near the largest double, whose finite
+  // differences do) never agrees: splitting it would only cost 4096 times more.
+  if (!std::isfinite(two) || std::fabs(one - two) <= tol || depth >= 12) {
     return two;
   }
   return integrate(a, m, whole, depth + 1) + integrate(m, b, whole, depth + 1);

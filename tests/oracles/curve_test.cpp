@@ -162,6 +162,27 @@ TEST(ParametricCurve, Errors) {
             std::string::npos);
 }
 
+// Coordinates near the largest double make the finite-difference speed
+// overflow: refused after a bounded number of evaluations (one Gauss-Legendre
+// pair per interval), not after splitting every interval 12 times (found by the
+// CLI campaign: a cube whose curve had x = 1e308 took a CPU-second to refuse).
+TEST(ParametricCurve, AnOverflowingSpeedIsRefusedQuickly) {
+  long evaluations = 0;
+  const std::string e = error_of([&] {
+    ParametricCurve(
+        [&](double t) {
+          ++evaluations;
+          return Point3{1e308, t, 0.5};
+        },
+        -0.5, 0.5);
+  });
+  EXPECT_EQ(e.rfind("its arc length is not finite: coordinates up to 1e+308", 0), 0u) << e;
+  // 64 intervals, 3 Gauss-Legendre rules of 5 speeds of at most 5 points each,
+  // plus the sampling of the intervals: far below the 4096-fold split.
+  EXPECT_LT(evaluations, 20000);
+  EXPECT_GT(evaluations, 64);
+}
+
 TEST(ParametricCurve, ConcurrentQueriesAgree) {
   // Expression curves keep per-thread parsers: queries from several threads
   // give the same answers as from one.
