@@ -69,7 +69,7 @@ class RestrictedComplex {
   Box3 clip_box_;  ///< oracle box with a margin: rays are clipped to it
   Triangulation tr_;
   std::uint32_t next_stamp_ = 1;
-  std::vector<std::uint64_t> live_;               ///< bit s: the cell stamped s still exists
+  std::vector<std::uint64_t> live_;                   ///< bit s: the cell stamped s still exists
   std::vector<std::vector<PatchId>> curve_patches_;   ///< index = CurveId - 1
   std::vector<std::vector<PatchId>> corner_patches_;  ///< index = CornerId - 1
 };

@@ -111,7 +111,7 @@ struct CellInfo {
   Point3 circumcenter;          ///< finite cells only
   double squared_radius = 0.0;  ///< finite cells only
   std::array<PatchId, 4> facet_patch{};  ///< patch of facet i, or kNotRestricted
-  SurfaceCenters surface_center;     ///< center of facet i's surface Delaunay ball
+  SurfaceCenters surface_center;         ///< center of facet i's surface Delaunay ball
   /// A crossing of facet `crossing_facet`'s dual edge found while labeling this
   /// cell from the neighbor with stamp `crossing_with` (held in facet_patch and
   /// surface_center until update_facet() takes it); -1: none.
