@@ -87,7 +87,7 @@ void RestrictedComplex::init_cell(Cell_handle c, Cell_handle from) {
     info.crossing_facet = static_cast<std::int8_t>(i);
     info.crossing_with = from->info().stamp;
     info.facet_patch[i] = l.crossing->patch;
-    info.surface_center[i] = l.crossing->point;
+    info.surface_center.set(i, l.crossing->point);
   }
 }
 
@@ -181,9 +181,9 @@ bool RestrictedComplex::update_facet(Cell_handle c, int i) {
     if (!hit) return false;
   }
   c->info().facet_patch[i] = hit->patch;
-  c->info().surface_center[i] = hit->point;
+  c->info().surface_center.set(i, hit->point);
   n->info().facet_patch[j] = hit->patch;
-  n->info().surface_center[j] = hit->point;
+  n->info().surface_center.set(j, hit->point);
   return true;
 }
 

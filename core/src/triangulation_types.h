@@ -71,9 +71,11 @@ inline constexpr PatchId kNotRestricted{0};
 /// The centers of the surface Delaunay balls of a cell's four facets, stored
 /// out of line: only cells with a restricted facet (a few percent of them,
 /// along the surface) need them, and held inline they were 96 of a cell's 256
-/// bytes. Storage appears on the first write access and is freed with the cell.
-/// A read of a cell without storage sees the origin (facet_patch says which
-/// entries mean something).
+/// bytes. Storage appears on the first set() and is freed with the cell; a
+/// read never creates it (a read of a cell without storage sees the origin;
+/// facet_patch says which entries mean something). Writes go through set()
+/// alone, so a read through a non-const cell cannot allocate: exudation once
+/// gave nearly every cell 112 bytes of storage that way, a quarter of the peak.
 class SurfaceCenters {
  public:
   SurfaceCenters() = default;
@@ -86,13 +88,13 @@ class SurfaceCenters {
   }
   SurfaceCenters& operator=(SurfaceCenters&&) noexcept = default;
 
-  Point3& operator[](int i) {
-    if (!centers_) centers_ = std::make_unique<std::array<Point3, 4>>();
-    return (*centers_)[i];
-  }
   const Point3& operator[](int i) const { return centers_ ? (*centers_)[i] : kNone; }
-  /// operator[] without creating storage, for reads through a non-const cell.
-  const Point3& get(int i) const { return (*this)[i]; }
+  void set(int i, const Point3& center) {
+    if (!centers_) centers_ = std::make_unique<std::array<Point3, 4>>();
+    (*centers_)[i] = center;
+  }
+  /// Whether any entry was ever set (tests: storage only where restricted).
+  bool has_storage() const { return centers_ != nullptr; }
 
  private:
   static inline const Point3 kNone{};

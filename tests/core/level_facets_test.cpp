@@ -22,7 +22,7 @@ TEST(FacetLevel, TheEightHullFacetsAreRestrictedWithTheirSurfaceBalls) {
   const auto facets = tiny.restricted_facets();
   ASSERT_EQ(facets.size(), 8u);
   for (const auto& [c, i] : facets) {
-    const Point3 center = c->info().surface_center.get(i);
+    const Point3 center = c->info().surface_center[i];
     EXPECT_NEAR(norm(center), 1.0, 1e-8);
     EXPECT_NEAR(std::abs(center.x), 1 / std::sqrt(3.0), 1e-8);
     EXPECT_NEAR(tiny.complex.facet_power(c, i, center), kBallR2, 1e-8);

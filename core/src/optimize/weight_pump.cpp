@@ -336,7 +336,8 @@ bool WeightPump::commit(Vertex_handle v, double weight) {
     info.facet_patch.fill(kNotRestricted);
     const int k = c->index(v);
     info.facet_patch[k] = o.cell->info().facet_patch[o.index];
-    info.surface_center[k] = o.cell->info().surface_center[o.index];
+    if (info.facet_patch[k] != kNotRestricted)
+      info.surface_center.set(k, o.cell->info().surface_center[o.index]);
     for (int i = 0; i < 4; ++i) {
       if (i == k) continue;
       Vertex_handle a, b;
@@ -348,7 +349,7 @@ bool WeightPump::commit(Vertex_handle v, double weight) {
       for (const StarFacet& f : star_facets_) {
         if (f.a == a && f.b == b) {
           info.facet_patch[i] = f.patch;
-          info.surface_center[i] = f.center;
+          info.surface_center.set(i, f.center);
         }
       }
     }
