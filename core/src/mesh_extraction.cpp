@@ -30,6 +30,24 @@ TetMesh Refiner::extract_mesh() {
     extract_features(mesh);
     return mesh;
   }
+  // Exact sizes first: grown by doubling, the arrays held up to twice their
+  // size, and a reallocation both copies at once, at the run's peak (the
+  // triangulation is still alive here).
+  std::size_t tets = 0, triangles = 0;
+  for (auto c = tr_.finite_cells_begin(); c != tr_.finite_cells_end(); ++c) {
+    const int label = c->info().label;
+    if (label == kOutside.value) continue;
+    ++tets;
+    for (int i = 0; i < 4; ++i) {
+      if (c->info().facet_patch[i] != kNotRestricted && !(c->neighbor(i)->info().label > label))
+        ++triangles;
+    }
+  }
+  mesh.tets.reserve(tets);
+  mesh.tet_subdomain.reserve(tets);
+  mesh.triangles.reserve(triangles);
+  mesh.triangle_patch.reserve(triangles);
+  mesh.vertices.reserve(tr_.number_of_vertices());
   for (auto c = tr_.finite_cells_begin(); c != tr_.finite_cells_end(); ++c) {
     const int label = c->info().label;
     if (label == kOutside.value) continue;
@@ -84,6 +102,9 @@ void Refiner::extract_features(TetMesh& mesh) {
   // Feature vertices are found by position, not by handle: sliver exudation
   // re-inserts vertices with weights, which changes their handles but never
   // their positions.
+  // Only the corners and the curve samples are looked up: a map of their
+  // positions, filled by one pass over the vertices (not a map of every
+  // vertex: some 70 bytes per vertex, at the run's peak).
   struct PointHash {
     std::size_t operator()(const Point3& p) const {
       const std::hash<double> h;
@@ -91,8 +112,13 @@ void Refiner::extract_features(TetMesh& mesh) {
     }
   };
   std::unordered_map<Point3, int, PointHash> index_at;
+  for (const CornerInfo& corner : curves_.corners()) index_at.emplace(corner.point, -1);
+  for (const CurveState& c : curves_.curves()) {
+    for (const auto& sample : c.samples) index_at.emplace(sample.second.position, -1);
+  }
   for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
-    index_at.emplace(mesh.vertices[i], static_cast<int>(i));
+    const auto it = index_at.find(mesh.vertices[i]);
+    if (it != index_at.end() && it->second < 0) it->second = static_cast<int>(i);
   }
   auto index_of = [&](const Point3& p) {
     const auto it = index_at.find(p);
