@@ -37,17 +37,12 @@ template <std::size_t N>
 std::array<double, 6> bounding_box(const TetMesh& mesh,
                                    const std::vector<std::array<int, N>>& elements,
                                    const std::vector<int>& which) {
-  constexpr double kInf = std::numeric_limits<double>::infinity();
-  Point3 lo{kInf, kInf, kInf}, hi{-kInf, -kInf, -kInf};
+  if (which.empty()) return {};
+  Box3 box = Box3::empty();
   for (int e : which) {
-    for (int v : elements[e]) {
-      const Point3& p = mesh.vertices[v];
-      lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-      hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-    }
+    for (int v : elements[e]) box.grow(mesh.vertices[v]);
   }
-  if (which.empty()) lo = hi = Point3{};
-  return {lo.x, lo.y, lo.z, hi.x, hi.y, hi.z};
+  return {box.lo.x, box.lo.y, box.lo.z, box.hi.x, box.hi.y, box.hi.z};
 }
 
 /// The labels and element groups of one dimension.

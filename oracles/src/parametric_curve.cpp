@@ -101,7 +101,7 @@ void ParametricCurve::build_table() {
   params_.push_back(t0_);
   Point3 prev = eval(t0_);
   const Point3 first = prev;
-  Box3 extent{first, first};
+  Box3 extent = Box3::around({first});
   for (int i = 1; i <= kMinIntervals; ++i) {
     const double a = params_.back();
     const double b = i == kMinIntervals ? t1_ : t0_ + (t1_ - t0_) * i / kMinIntervals;
@@ -109,13 +109,7 @@ void ParametricCurve::build_table() {
     split(split, a, prev, b, pb, 0);
     prev = pb;
   }
-  for (double t : params_) {
-    const Point3 p = gamma_(t);
-    extent.lo = {std::min(extent.lo.x, p.x), std::min(extent.lo.y, p.y),
-                 std::min(extent.lo.z, p.z)};
-    extent.hi = {std::max(extent.hi.x, p.x), std::max(extent.hi.y, p.y),
-                 std::max(extent.hi.z, p.z)};
-  }
+  for (double t : params_) extent.grow(gamma_(t));
   // Rounding floor of a finite-difference length integral over one interval.
   noise_ =
       1e3 * std::numeric_limits<double>::epsilon() * std::max(norm(extent.lo), norm(extent.hi));
