@@ -23,15 +23,31 @@ double distance_to_line(const Point3& x, const Point3& origin, const Point3& uni
   return norm(d - dot(d, unit) * unit);
 }
 
-TEST(RestrictedComplex, IncrementalBookkeepingEqualsARecomputation) {
-  const ImplicitOracle oracle = test::nested_spheres();
-  Criteria criteria = test::uniform_criteria(0.12);
-  criteria.min_size = criteria.min_size_for(oracle.bounding_box());
+/// The nested spheres refined at a uniform size (the refiner keeps references
+/// to the oracle, the criteria and the options: they live here with it).
+struct RefinedNestedSpheres {
+  explicit RefinedNestedSpheres(double size)
+      : oracle(test::nested_spheres()),
+        criteria(criteria_for(oracle, size)),
+        refiner(oracle, criteria, options, nullptr) {
+    refiner.insert_initial_points();
+    refiner.refine();
+  }
+  static Criteria criteria_for(const ImplicitOracle& oracle, double size) {
+    Criteria c = test::uniform_criteria(size);
+    c.min_size = c.min_size_for(oracle.bounding_box());
+    return c;
+  }
+  const ImplicitOracle oracle;
+  const Criteria criteria;
   const MeshOptions options;
-  Refiner refiner(oracle, criteria, options, nullptr);
-  refiner.insert_initial_points();
-  refiner.refine();
-  const Triangulation& tr = refiner.triangulation();
+  Refiner refiner;
+};
+
+TEST(RestrictedComplex, IncrementalBookkeepingEqualsARecomputation) {
+  RefinedNestedSpheres run(0.12);
+  const ImplicitOracle& oracle = run.oracle;
+  const Triangulation& tr = run.refiner.triangulation();
   ASSERT_GT(tr.number_of_finite_cells(), 5000u);
 
   std::size_t restricted = 0, labeled = 0;
@@ -111,21 +127,15 @@ std::pair<std::size_t, std::size_t> storage_counts(const Triangulation& tr) {
 // pay for them. Exudation once gave storage to nearly every cell it rebuilt
 // (a read through a non-const cell created it): 100 MB of 360 at 1.1 M tets.
 TEST(RestrictedComplex, SurfaceCentersAreStoredOnlyAlongTheSurface) {
-  const ImplicitOracle oracle = test::nested_spheres();
-  Criteria criteria = test::uniform_criteria(0.06);
-  criteria.min_size = criteria.min_size_for(oracle.bounding_box());
-  const MeshOptions options;
-  Refiner refiner(oracle, criteria, options, nullptr);
-  refiner.insert_initial_points();
-  refiner.refine();
-  Triangulation& tr = refiner.triangulation();
+  RefinedNestedSpheres run(0.06);
+  Triangulation& tr = run.refiner.triangulation();
   const auto [stored_before, surface_before] = storage_counts(tr);
   const std::size_t cells = tr.number_of_cells();
   ASSERT_GT(surface_before, 400u);
   EXPECT_LE(stored_before, 2 * surface_before);
   EXPECT_LT(stored_before, cells / 4);
 
-  const ExudationStats stats = exude_slivers(tr, criteria, options.exudation);
+  const ExudationStats stats = exude_slivers(tr, run.criteria, run.options.exudation);
   ASSERT_TRUE(stats.ran);
   ASSERT_GT(stats.moves_accepted, 100u);
   const auto [stored_after, surface_after] = storage_counts(tr);
