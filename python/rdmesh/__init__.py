@@ -12,7 +12,7 @@ Delaunay refinement of Rineau & Yvinec (INRIA RR-7912) driven by exact oracles.
 Options are the command line's (rdmesh --help), with underscores: size,
 edge_size, facet_size, cell_size, facet_distance, facet_angle, radius_edge,
 min_size, max_elements, features ("protect" or "refine"), surface_only, heal,
-feature_angle, exude (default True; False is --no-exude), exude_time_limit,
+feature_angle, exude (default True; False is --no-exude), exude_time_limit, exude_bound,
 optimize (default True; False is --no-optimize), threads (0: all cores; the
 mesh is the same for any number),
 time_limit, keep_bad_mesh, check ("cheap" or "full"), order (1, or 2: 10-node

@@ -23,6 +23,7 @@ const std::map<std::string, std::string>& accepted_values() {
       {"--min-size", "a length > 0"},
       {"--max-elements", "a number > 0, such as 1e8"},
       {"--exude-time-limit", "a number of seconds >= 0 (0: no limit)"},
+      {"--exude-bound", "an angle in degrees in (0, 90]"},
       {"--time-limit", "a number of seconds >= 0 (0: no limit)"},
       {"--report", "a file name ending in .json"},
       {"--threads", "a number of threads from 0 (all cores) to 1024"},

@@ -93,6 +93,20 @@ void add_options(CLI::App& app, Options& opt) {
   app.add_option("--exude-time-limit", opt.exude_time_limit,
                  "Stop sliver exudation after this many seconds (default: no limit)")
       ->check(seconds);
+  app.add_option("--exude-bound", opt.exude_bound,
+                 "Sliver exudation treats the vertices of tetrahedra whose smallest dihedral "
+                 "angle is below this, degrees (default 25; lower is faster, with more "
+                 "tetrahedra left between it and 25)")
+      ->check(CLI::Validator(
+          [](std::string& v) -> std::string {
+            try {
+              const double deg = std::stod(v);
+              if (deg > 0 && deg <= 90) return {};
+            } catch (const std::exception&) {
+            }
+            return "must be an angle in degrees in (0, 90], got '" + v + "'";
+          },
+          "DEG"));
   app.add_flag("--no-optimize", opt.no_optimize,
                "Keep the restricted Delaunay tetrahedra: no final flips and vertex moves "
                "against the worst dihedral angles");
@@ -301,6 +315,7 @@ ExudationOptions exudation_options(const Options& opt) {
   ExudationOptions o;
   o.enabled = !opt.no_exude;
   o.time_limit_seconds = opt.exude_time_limit;
+  o.sliver_bound_deg = opt.exude_bound;
   return o;
 }
 
@@ -354,6 +369,7 @@ nlohmann::json criteria_json(const Options& opt, const Criteria& criteria, const
       {"surface_only", opt.surface_only},
       {"exudation", !opt.no_exude && !opt.surface_only},
       {"exude_time_limit_s", opt.exude_time_limit},
+      {"exude_bound_deg", opt.exude_bound},
       {"threads", resolve_threads(opt.threads)},
       {"optimize", !opt.no_optimize && !opt.surface_only},
       {"time_limit_s", opt.time_limit},

@@ -55,6 +55,10 @@ TEST(CliMessages, ParseErrorsNameTheOptionAndWhatItAccepts) {
                  "--check: 'everything' is not allowed; expected cheap or full");
   expect_refused("in.json --feature-angle 200",
                  "--feature-angle: '200' is not allowed; expected an angle in degrees in [0, 180]");
+  expect_refused("in.json --exude-bound 0",
+                 "--exude-bound: '0' is not allowed; expected an angle in degrees in (0, 90]");
+  expect_refused("in.json --exude-bound 91", "--exude-bound: '91' is not allowed");
+  expect_refused("in.json --exude-bound nan", "--exude-bound: 'nan' is not allowed");
   expect_refused("in.json --time-limit -3",
                  "--time-limit: '-3' is not allowed; expected a number "
                  "of seconds >= 0");

@@ -66,6 +66,7 @@ TEST(CliReport, CarriesVersionCommandLineChecksumAndTheCriteriaUsed) {
   EXPECT_EQ(c.at("features").get<std::string>(), "protect");
   EXPECT_EQ(c.at("check").get<std::string>(), "full");
   EXPECT_TRUE(c.at("exudation").get<bool>());
+  EXPECT_EQ(c.at("exude_bound_deg").get<double>(), 25);
   EXPECT_FALSE(c.at("surface_only").get<bool>());
   EXPECT_FALSE(c.contains("feature_angle_deg")) << "not a triangle mesh";
 }
@@ -88,6 +89,28 @@ TEST(CliReport, AVaryingSizeShowsItsRangeAndGivenOptionsWin) {
   EXPECT_EQ(c.at("features").get<std::string>(), "refine");
   EXPECT_EQ(c.at("facet_angle_deg").get<double>(), 20);
   EXPECT_EQ(c.at("exude_time_limit_s").get<double>(), 7);
+}
+
+TEST(CliReport, TheExudationBoundDecidesWhichVerticesArePumped) {
+  // A lower bound pumps fewer vertices (only those of tets below it), and the
+  // final improvement still lifts every tet to 20 degrees.
+  ScratchDir dir;
+  const std::string sample = source_path("samples/sphere.json");
+  auto exudation = [&](const std::string& extra, const std::string& report) {
+    const CliRun run =
+        run_cli("'" + sample + "' -o out.msh --size 0.1 -q --report " + report + extra, dir.path());
+    EXPECT_EQ(run.exit_code, 0) << run.output;
+    return read_json(dir.file(report));
+  };
+  const nlohmann::json wide = exudation("", "wide.json");
+  const nlohmann::json narrow = exudation(" --exude-bound 10", "narrow.json");
+  EXPECT_EQ(narrow.at("criteria").at("exude_bound_deg").get<double>(), 10);
+  const std::size_t wide_tries = wide.at("exudation").at("moves_tried").get<std::size_t>();
+  const std::size_t narrow_tries = narrow.at("exudation").at("moves_tried").get<std::size_t>();
+  EXPECT_GT(narrow_tries, 0u);
+  EXPECT_LT(2 * narrow_tries, wide_tries);
+  for (const nlohmann::json* r : {&wide, &narrow})
+    EXPECT_GE(r->at("optimization").at("min_dihedral_after_deg").get<double>(), 20.0 - 1e-9);
 }
 
 }  // namespace

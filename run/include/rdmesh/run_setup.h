@@ -34,8 +34,10 @@ struct Options {
   bool no_exude = false;                      ///< --no-exude
   bool no_optimize = false;                   ///< --no-optimize: keep the restricted Delaunay tets
   double exude_time_limit = 0;                ///< --exude-time-limit SECONDS, 0 = none
-  int threads = 0;                            ///< --threads N, 0 = all cores
-  std::string report;                         ///< JSON report path, empty = none
+  /// --exude-bound DEG: exudation pumps the vertices of tets below this angle.
+  double exude_bound = ExudationOptions{}.sliver_bound_deg;
+  int threads = 0;     ///< --threads N, 0 = all cores
+  std::string report;  ///< JSON report path, empty = none
   bool quiet = false;
   bool heal = false;          ///< --heal: OpenCASCADE shape healing of CAD input
   double feature_angle = 60;  ///< --feature-angle DEG: sharp-edge threshold of triangle-mesh input
