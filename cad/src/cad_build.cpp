@@ -23,6 +23,7 @@
 #include <TopoDS_Edge.hxx>
 #include <TopoDS_Vertex.hxx>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -30,6 +31,7 @@
 
 #include "cad_model.h"
 #include "rdmesh/feature_name.h"
+#include "rdmesh/number_text.h"
 
 namespace rdmesh::cad {
 namespace {
@@ -353,6 +355,19 @@ void collect_curves(CadOracle::Model& m, const TopTools_IndexedMapOfShape& patch
       }
     }
     m.features.add_curve(std::move(info), std::move(curve));
+  }
+  // Two distinct vertices at the very same point (an unsewn model, or a
+  // malformed file whose vertex moved onto another) would be two corners on
+  // one mesh vertex: the mesh cannot tell them apart, so the model is refused.
+  std::map<std::array<double, 3>, int> corner_at;
+  for (int q = 1; q <= vertices.Extent(); ++q) {
+    const Point3 p = to_point(BRep_Tool::Pnt(TopoDS::Vertex(vertices(q))));
+    const auto [it, fresh] = corner_at.emplace(std::array<double, 3>{p.x, p.y, p.z}, q);
+    if (!fresh) {
+      throw InputError("vertices " + std::to_string(it->second) + " and " + std::to_string(q) +
+                       " of the model's edges are distinct but at the same point " + point_text(p) +
+                       " (an unsewn or malformed model)");
+    }
   }
   for (int q = 1; q <= vertices.Extent(); ++q) {
     CornerInfo& corner =

@@ -56,6 +56,39 @@ TEST(CadBadFiles, EachFailsWithOneLineExitTwoAndNoOutput) {
   }
 }
 
+TEST(CadBadFiles, TwoDistinctVerticesAtOnePointAreRefusedNotAnInternalError) {
+  // The first IGES campaign of fuzz/cli_campaign.py (seeds written by
+  // rdmesh_cad_tool) found 7 files whose mangled vertex list put two distinct
+  // vertices of a box at one point; healing does the same to this BREP box,
+  // whose second vertex was moved onto the first. Both corners then landed on
+  // one mesh vertex and the run ended in an internal error (exit 3, "vertex
+  // listed twice in corner_vertices"). The model is refused, naming both.
+  const ScratchDir inputs, scratch;
+  const std::string original = inputs.file("box.brep");
+  write_cad_test_shape(CadTestShape::box, original);
+  std::vector<std::string> lines;
+  {
+    std::ifstream in(original);
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+  }
+  std::vector<std::size_t> points;  // a vertex record: "Ve", its tolerance, its point
+  for (std::size_t i = 0; i + 2 < lines.size(); ++i)
+    if (lines[i] == "Ve") points.push_back(i + 2);
+  ASSERT_EQ(points.size(), 8u);
+  ASSERT_EQ(lines[points[0]], "0 0 30");
+  lines[points[1]] = lines[points[0]];
+  std::string text;
+  for (const std::string& line : lines) text += line + "\n";
+  const std::string mutant = inputs.write("mutant.brep", text);
+  const CliRun run = run_cli("'" + mutant + "' -o out.mesh -q --heal", scratch.path());
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_EQ(run.output,
+            "rdmesh: error: " + mutant +
+                ": vertices 1 and 4 of the model's edges are distinct but at the same point "
+                "(0, 0, 30) (an unsewn or malformed model)\n");
+  EXPECT_EQ(scratch.entries(), 0u);
+}
+
 TEST(CadBadFiles, AReaderThatLoopsIsStoppedWithinSecondsOnASmallFile) {
   // One byte of gmsh_crack1.brep's shape section replaced (a campaign of
   // fuzz/cli_campaign.py found it): OpenCASCADE's BRepTools_ShapeSet::
