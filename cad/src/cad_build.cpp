@@ -361,17 +361,14 @@ void collect_curves(CadOracle::Model& m, const TopTools_IndexedMapOfShape& patch
   // one mesh vertex: the mesh cannot tell them apart, so the model is refused.
   std::map<std::array<double, 3>, int> corner_at;
   for (int q = 1; q <= vertices.Extent(); ++q) {
-    const Point3 p = to_point(BRep_Tool::Pnt(TopoDS::Vertex(vertices(q))));
-    const auto [it, fresh] = corner_at.emplace(std::array<double, 3>{p.x, p.y, p.z}, q);
+    const Point3 point = to_point(BRep_Tool::Pnt(TopoDS::Vertex(vertices(q))));
+    const auto [it, fresh] = corner_at.emplace(std::array<double, 3>{point.x, point.y, point.z}, q);
     if (!fresh) {
       throw InputError("vertices " + std::to_string(it->second) + " and " + std::to_string(q) +
-                       " of the model's edges are distinct but at the same point " + point_text(p) +
-                       " (an unsewn or malformed model)");
+                       " of the model's edges are distinct but at the same point " +
+                       point_text(point) + " (an unsewn or malformed model)");
     }
-  }
-  for (int q = 1; q <= vertices.Extent(); ++q) {
-    CornerInfo& corner =
-        m.features.add_corner(to_point(BRep_Tool::Pnt(TopoDS::Vertex(vertices(q)))));
+    CornerInfo& corner = m.features.add_corner(point);
     for (int c : corner_curves[q]) corner.curves.push_back(CurveId(c));
     for (int p : corner_patches[q]) corner.patches.push_back(PatchId(p));
   }

@@ -30,6 +30,10 @@ TetMesh Refiner::extract_mesh() {
     extract_features(mesh);
     return mesh;
   }
+  // A restricted facet separates two labels; it is emitted from the larger one.
+  auto emits_triangle = [](Cell_handle c, int i, int label) {
+    return c->info().facet_patch[i] != kNotRestricted && !(c->neighbor(i)->info().label > label);
+  };
   // Exact sizes first: grown by doubling, the arrays held up to twice their
   // size, and a reallocation both copies at once, at the run's peak (the
   // triangulation is still alive here).
@@ -38,10 +42,7 @@ TetMesh Refiner::extract_mesh() {
     const int label = c->info().label;
     if (label == kOutside.value) continue;
     ++tets;
-    for (int i = 0; i < 4; ++i) {
-      if (c->info().facet_patch[i] != kNotRestricted && !(c->neighbor(i)->info().label > label))
-        ++triangles;
-    }
+    for (int i = 0; i < 4; ++i) triangles += emits_triangle(c, i, label);
   }
   mesh.tets.reserve(tets);
   mesh.tet_subdomain.reserve(tets);
@@ -56,9 +57,8 @@ TetMesh Refiner::extract_mesh() {
                          index_of(c->vertex(3))});
     mesh.tet_subdomain.push_back(SubdomainId{label});
     for (int i = 0; i < 4; ++i) {
+      if (!emits_triangle(c, i, label)) continue;
       const PatchId patch = c->info().facet_patch[i];
-      // A restricted facet separates two labels; emit it from the larger one.
-      if (patch == kNotRestricted || c->neighbor(i)->info().label > label) continue;
       Vertex_handle a = c->vertex((i + 1) & 3), b = c->vertex((i + 2) & 3),
                     d = c->vertex((i + 3) & 3);
       // Normal (b-a) x (d-a) must point away from this cell's vertex i.
