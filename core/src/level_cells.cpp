@@ -1,12 +1,30 @@
 // The cell level: rule R5 on the cells of D|O (RR-7912 section 3).
 #include "level_cells.h"
 
+#include <cmath>
+
 #include "level_curves.h"
 #include "level_facets.h"
 #include "rdmesh/debug_assert.h"
 #include "simplex_geometry.h"
 
 namespace rdmesh::detail {
+
+namespace {
+/// The cell queue's buckets: four per doubling of the priority (a ratio > 1);
+/// ratios above 2^64 share the last one. Narrower buckets follow the strict
+/// worst-first order more closely, wider ones keep more insertions next to
+/// the last (sphere, 1.1 M tets: 1 per doubling made 8% more tets, 8 per
+/// doubling lost half of the speed-up).
+constexpr double kBucketsPerDoubling = 4.0;
+constexpr std::size_t kLastBucket = 256;
+
+std::size_t bucket_of(double priority) {
+  if (!(priority > 1.0)) return 0;
+  const double b = std::floor(std::log2(priority) * kBucketsPerDoubling);
+  return b >= static_cast<double>(kLastBucket) ? kLastBucket : static_cast<std::size_t>(b);
+}
+}  // namespace
 
 CellLevel::CellLevel(const RestrictedComplex& complex, const Criteria& criteria)
     : complex_(complex),
@@ -37,12 +55,11 @@ Violation CellLevel::violation(Cell_handle c) const {
 
 void CellLevel::consider(Cell_handle c) {
   const Violation v = violation(c);
-  if (v) queue_.push({v.priority, c, c->info().stamp, -1});
+  if (v) queue_.push(bucket_of(v.priority), {v.priority, c, c->info().stamp, -1});
 }
 
 std::optional<ElementEntry> CellLevel::pop() {
-  const ElementEntry e = queue_.top();
-  queue_.pop();
+  const ElementEntry e = queue_.pop();
   if (!complex_.is_live(e.stamp) || !violation(e.cell)) return std::nullopt;
   return e;
 }
@@ -69,7 +86,7 @@ bool CellLevel::refine(const ElementEntry& entry, Insertion& insertion, CurveLev
   if (redirected) {
     ++insertion.stats().encroachments;
     // The cell may still need refining.
-    if (inserted && complex_.is_live(entry.stamp)) queue_.push(entry);
+    if (inserted && complex_.is_live(entry.stamp)) queue_.push(bucket_of(entry.priority), entry);
     return inserted;
   }
   if (insertion.insert(p, VertexInfo{}) == Vertex_handle()) return false;

@@ -10,12 +10,12 @@
 #include <cstddef>
 #include <optional>
 
+#include "bucket_queue.h"
 #include "element_entry.h"
 #include "insertion.h"
 #include "rdmesh/criteria.h"
 #include "restricted_complex.h"
 #include "violation.h"
-#include "worst_first_heap.h"
 
 namespace rdmesh::detail {
 
@@ -53,7 +53,7 @@ class CellLevel {
   const RestrictedComplex& complex_;
   const Criteria& criteria_;
   double shape_bound_sq_;  ///< beta_3^2
-  WorstFirstHeap<ElementEntry> queue_;
+  BucketQueue<ElementEntry> queue_;
 };
 
 }  // namespace rdmesh::detail

@@ -28,10 +28,14 @@ TEST_P(CliSample, MeshesWithDefaultsAndReportsAClosedBoundary) {
   EXPECT_GT(r.at("tets").get<int>(), 100);
   EXPECT_FALSE(r.at("guard").at("fired").get<bool>());
   // Every patch is a closed surface here (spheres: 2 per component, torus: 0).
+  // The facet distance (R4) is measured at a facet's circumcenter; the report
+  // samples edge midpoints too, and an edge along the torus's tube (radius 0.3)
+  // of length 0.14 bulges 0.0083 at its midpoint while the circumcenters of
+  // both its facets stay within 0.0035: twice the criterion bounds both.
   for (const auto& patch : r.at("patches")) {
     EXPECT_GT(patch.at("triangles").get<int>(), 0);
     EXPECT_LE(patch.at("max_distance").get<double>(),
-              r.at("criteria").at("facet_distance").get<double>() * 1.5);
+              r.at("criteria").at("facet_distance").get<double>() * 2);
   }
   double volume = 0;
   for (const auto& sub : r.at("subdomains")) volume += sub.at("volume").get<double>();
