@@ -17,6 +17,9 @@ namespace {
 
 bool vertex_less(Vertex_handle a, Vertex_handle b) { return &*a < &*b; }
 
+/// facet_cosine_'s mark of a cosine not computed yet (cosines are <= 1).
+constexpr double kUnknownCosine = 2.0;
+
 /// Weight of v at which it enters the power sphere of finite cell c (v is not
 /// a vertex of c): |v - z|^2 - r^2 for c's orthosphere (z, r^2), computed
 /// relative to c's first vertex. Infinite for a flat cell.
@@ -146,7 +149,9 @@ double WeightPump::boundary_quality(Vertex_handle v, double cutoff, bool measure
   boundary_.clear();
   const Point3 pv = to_point3(v->point());
   double quality = -std::numeric_limits<double>::infinity();
-  for (const Cell_handle& c : zone_) {
+  if (measure) facet_cosine_.resize(4 * zone_.size(), kUnknownCosine);
+  for (std::size_t z = 0; z < zone_.size(); ++z) {
+    const Cell_handle c = zone_[z];
     for (int i = 0; i < 4; ++i) {
       const Cell_handle n = c->neighbor(i);
       if (n->tds_data().is_in_conflict()) continue;
@@ -156,11 +161,17 @@ double WeightPump::boundary_quality(Vertex_handle v, double cutoff, bool measure
         f.infinite = f.infinite || tr_.is_infinite(c->vertex((i + k) & 3));
       boundary_.push_back(f);
       if (!measure || f.infinite || f.label == 0) continue;
-      const double cosine = max_dihedral_cosine(pv, to_point3(c->vertex((i + 1) & 3)->point()),
-                                                to_point3(c->vertex((i + 2) & 3)->point()),
-                                                to_point3(c->vertex((i + 3) & 3)->point()));
+      // The new cell v + facet does not depend on the weight: one cosine per pump.
+      double& cosine = facet_cosine_[4 * z + static_cast<std::size_t>(i)];
+      if (cosine == kUnknownCosine)
+        cosine = max_dihedral_cosine(pv, to_point3(c->vertex((i + 1) & 3)->point()),
+                                     to_point3(c->vertex((i + 2) & 3)->point()),
+                                     to_point3(c->vertex((i + 3) & 3)->point()));
       quality = std::max(quality, cosine);
-      if (!(quality < cutoff)) return quality;
+      if (!(quality < cutoff)) {
+        rejecting_ = {c, i, cosine};
+        return quality;
+      }
     }
   }
   return quality;
@@ -249,6 +260,8 @@ WeightPump::Outcome WeightPump::pump(Vertex_handle v, double max_weight,
                                      const std::vector<Cell_handle>* star, double star_cosine) {
   collect_star(v, star, star_cosine);
   frontier_.clear();
+  rejecting_ = {};
+  facet_cosine_.clear();
   for (std::size_t z = 0; z < star_size_; ++z)
     push_frontier(zone_[z]->neighbor(zone_[z]->index(v)), v);
 
@@ -276,6 +289,11 @@ WeightPump::Outcome WeightPump::pump(Vertex_handle v, double max_weight,
     if (!(weight > crit && weight > v->point().weight())) continue;
     // Cheap first: only a candidate better than the best so far is validated.
     const double cutoff = best_weight < 0 ? zone_quality_ : std::min(zone_quality_, best_quality);
+    // The new cell that rejected the last candidate, if its facet is still on
+    // the boundary of Z, rejects this one too (Z only grows during a pump).
+    if (rejecting_.inner != Cell_handle() && !(rejecting_.cosine < cutoff) &&
+        !rejecting_.inner->neighbor(rejecting_.index)->tds_data().is_in_conflict())
+      continue;
     const double quality = boundary_quality(v, cutoff);
     if (!(quality < cutoff)) continue;
     const Check check = validate(v);

@@ -148,6 +148,16 @@ class WeightPump {
     void clear() { c.clear(); }
   };
   FrontierQueue frontier_;
+  /// By zone_ index z and facet i (4 z + i): the cosine of the new cell v +
+  /// facet i of zone_[z], once computed in this pump.
+  std::vector<double> facet_cosine_;
+  /// The boundary facet (inner, index) of the last candidate boundary_quality()
+  /// rejected, and the cosine of its new cell.
+  struct Rejecting {
+    Cell_handle inner;
+    int index = -1;
+    double cosine = 0;
+  } rejecting_;
   std::vector<Cell_handle> exact_cells_;
   std::vector<Triangulation::Facet> exact_facets_;
   std::vector<Cell_handle> new_cells_;
