@@ -19,7 +19,6 @@
 #include "curve_smoothing.h"
 #include "patch_smoothing.h"
 #include "rdmesh/errors.h"
-#include "rdmesh/parallel_for.h"
 #include "rdmesh/stopwatch.h"
 #include "tet_flips.h"
 #include "tet_insertion.h"
@@ -43,17 +42,6 @@ void measure(const std::vector<double>& quality, double& min_deg, DihedralHistog
     detail::add_to_histogram(histogram, q);
   }
   tets = quality.size();
-}
-
-/// The smallest dihedral angle of every tet of `mesh`, on `threads` threads.
-std::vector<double> tet_qualities(const TetMesh& mesh, int threads) {
-  std::vector<double> quality(mesh.tets.size());
-  parallel_for(mesh.tets.size(), threads, [&](std::size_t i) {
-    const auto& t = mesh.tets[i];
-    quality[i] = detail::min_dihedral(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]],
-                                      mesh.vertices[t[3]]);
-  });
-  return quality;
 }
 
 /// The best flip touching tetrahedron t; false when none improves.
@@ -166,7 +154,8 @@ TetImprovementStats improve_tets(TetMesh& mesh, const TetImprovementOptions& opt
     if (changes == 0) break;
   }
   topo.write_to(mesh);
-  measure(tet_qualities(mesh, options.threads), stats.min_dihedral_after_deg, stats.histogram_after,
+  // The topology keeps every alive tet's quality up to date, in write_to's order.
+  measure(topo.alive_qualities(), stats.min_dihedral_after_deg, stats.histogram_after,
           stats.tets_after);
   stats.seconds = elapsed();
   return stats;

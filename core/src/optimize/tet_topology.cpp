@@ -52,8 +52,17 @@ TetTopology::TetTopology(const TetMesh& mesh, int threads)
   // The qualities, each a pure function of its tet, on `threads` threads.
   quality_.resize(n);
   parallel_for(n, threads, [&](std::size_t t) { quality_[t] = tet_quality(tets_[t]); });
+  // Each vertex's list sized once (a few spare places for the flips to come):
+  // growing millions of small lists by doubling costs more than the sweeps.
+  std::vector<int> count(points_.size(), 0);
+  for (const Tet& t : tets_)
+    for (const int v : t) ++count[v];
+  for (std::size_t v = 0; v < incident_.size(); ++v)
+    incident_[v].reserve(count[v] + kSpareIncidences);
   for (std::size_t t = 0; t < n; ++t)
     for (const int v : tets_[t]) incident_[v].push_back(static_cast<int>(t));
+  faces_.reserve(mesh.triangles.size());
+  edges_.reserve(mesh.triangles.size() * 3 / 2 + mesh.edges.size());
   for (const auto& f : mesh.triangles) {
     faces_.insert(face_key(f[0], f[1], f[2]));
     for (const auto& e : kTriangleEdges) edges_.insert(edge_key(f[e[0]], f[e[1]]));
@@ -134,6 +143,14 @@ void TetTopology::write_to(TetMesh& mesh) const {
     mesh.tets.push_back(tets_[t]);
     mesh.tet_subdomain.push_back(SubdomainId{labels_[t]});
   }
+}
+
+std::vector<double> TetTopology::alive_qualities() const {
+  std::vector<double> out;
+  out.reserve(tets_.size());
+  for (std::size_t t = 0; t < tets_.size(); ++t)
+    if (alive_[t]) out.push_back(quality_[t]);
+  return out;
 }
 
 }  // namespace rdmesh::detail

@@ -63,6 +63,8 @@ class TetTopology {
 
   /// Writes the alive tetrahedra (in creation order) and the vertex positions back.
   void write_to(TetMesh& mesh) const;
+  /// The qualities of the alive tetrahedra, in write_to()'s order.
+  std::vector<double> alive_qualities() const;
 
  private:
   using Key = std::array<int, 3>;  ///< sorted vertices; an edge's third is -1
@@ -73,6 +75,8 @@ class TetTopology {
       return static_cast<std::size_t>(h ^ (h >> 29));
     }
   };
+  /// Places reserved in each vertex's list of tetrahedra beyond its first count.
+  static constexpr int kSpareIncidences = 4;
   static Key edge_key(int a, int b);
   static Key face_key(int a, int b, int c);
 
