@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <iterator>
 #include <limits>
 #include <numbers>
 
@@ -30,13 +31,34 @@ std::vector<std::uint64_t> sorted_edges(const std::vector<std::array<int, 3>>& t
   return edges;
 }
 
-/// Angle in degrees between the half-planes bounded by line (p, q) that contain r and s.
-double dihedral_at_edge(const Point3& p, const Point3& q, const Point3& r, const Point3& s) {
+/// The angle between the half-planes bounded by line (p, q) that contain r
+/// and s, as the pair (sine, cosine) scaled by the same positive factor.
+struct ScaledAngle {
+  double sine, cosine;
+  double degrees() const { return std::atan2(sine, cosine) * 180.0 / std::numbers::pi; }
+  /// At a degenerate face both are 0, and degrees() is 0.
+  bool degenerate() const { return sine == 0 && cosine == 0; }
+  /// This angle is smaller than `o`. Both lie in [0, 180] degrees (their
+  /// sines are >= 0): the smaller one turns counterclockwise to the other,
+  /// unless they are 0 and 180 degrees (both sines 0).
+  bool operator<(const ScaledAngle& o) const {
+    if (degenerate() || o.degenerate()) return degenerate() && !o.degenerate();
+    const double turn = cosine * o.sine - o.cosine * sine;
+    if (turn != 0) return turn > 0;
+    return cosine > 0 && o.cosine < 0;
+  }
+};
+
+ScaledAngle angle_at_edge(const Point3& p, const Point3& q, const Point3& r, const Point3& s) {
   const Point3 e = q - p;
   const Point3 n1 = cross(e, r - p);  // normal of face (p, q, r), rotated copy of r's offset
   const Point3 n2 = cross(e, s - p);
-  const double angle = std::atan2(norm(cross(n1, n2)), dot(n1, n2));
-  return angle * 180.0 / std::numbers::pi;
+  return {norm(cross(n1, n2)), dot(n1, n2)};
+}
+
+/// Angle in degrees between the half-planes bounded by line (p, q) that contain r and s.
+double dihedral_at_edge(const Point3& p, const Point3& q, const Point3& r, const Point3& s) {
+  return angle_at_edge(p, q, r, s).degrees();
 }
 
 /// The distinct vertices of `edges`, sorted.
@@ -132,6 +154,15 @@ std::vector<double> dihedral_angles_deg(const Point3& a, const Point3& b, const 
                                         const Point3& d) {
   return {dihedral_at_edge(a, b, c, d), dihedral_at_edge(a, c, b, d), dihedral_at_edge(a, d, b, c),
           dihedral_at_edge(b, c, a, d), dihedral_at_edge(b, d, a, c), dihedral_at_edge(c, d, a, b)};
+}
+
+std::pair<double, double> dihedral_extremes_deg(const Point3& a, const Point3& b, const Point3& c,
+                                                const Point3& d) {
+  const ScaledAngle angles[6] = {angle_at_edge(a, b, c, d), angle_at_edge(a, c, b, d),
+                                 angle_at_edge(a, d, b, c), angle_at_edge(b, c, a, d),
+                                 angle_at_edge(b, d, a, c), angle_at_edge(c, d, a, b)};
+  const auto [lo, hi] = std::minmax_element(std::begin(angles), std::end(angles));
+  return {lo->degrees(), hi->degrees()};
 }
 
 double radius_edge_ratio(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {

@@ -40,11 +40,10 @@ void measure_tets(const TetMesh& mesh, const std::vector<Label>& subdomains, int
       const auto& tet = mesh.tets[t];
       const Point3 &a = mesh.vertices[tet[0]], &b = mesh.vertices[tet[1]],
                    &c = mesh.vertices[tet[2]], &d = mesh.vertices[tet[3]];
-      const std::vector<double> angles = dihedral_angles_deg(a, b, c, d);
-      const auto [lo, hi] = std::minmax_element(angles.begin(), angles.end());
-      f.min_dihedral = std::min(f.min_dihedral, *lo);
-      f.max_dihedral = std::max(f.max_dihedral, *hi);
-      ++f.histogram[static_cast<std::size_t>(std::clamp(*lo / 5.0, 0.0, 35.0))];
+      const auto [lo, hi] = dihedral_extremes_deg(a, b, c, d);
+      f.min_dihedral = std::min(f.min_dihedral, lo);
+      f.max_dihedral = std::max(f.max_dihedral, hi);
+      ++f.histogram[static_cast<std::size_t>(std::clamp(lo / 5.0, 0.0, 35.0))];
       f.max_radius_edge = std::max(f.max_radius_edge, radius_edge_ratio(a, b, c, d));
       const double volume = signed_volume(a, b, c, d);
       if (volume <= 0) ++f.inverted;

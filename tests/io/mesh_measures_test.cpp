@@ -3,9 +3,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <random>
+#include <vector>
 
 #include "io/test_meshes.h"
 
@@ -73,6 +77,36 @@ TEST(MeshMeasures, SliverHasSmallAndLargeAngles) {
   EXPECT_GT(*std::max_element(angles.begin(), angles.end()), 179.0);
   // The circumradius stays ~sqrt(2)/2 while the volume vanishes: radius-edge is bounded.
   EXPECT_NEAR(radius_edge_ratio(a, b, c, d), std::sqrt(2.0) / 2.0, 1e-3);
+}
+
+TEST(MeshMeasures, ExtremesAreTheSmallestAndLargestOfTheSixAngles) {
+  // Random tets (well shaped, slivers, needles), a flat one and one with a
+  // degenerate face (a repeated vertex: its angles are reported as 0).
+  std::mt19937 rng(77);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<std::array<Point3, 4>> tets;
+  for (int k = 0; k < 2000; ++k) {
+    const double squash = k % 3 == 0 ? 1e-4 : 1.0;  // every third one nearly flat
+    std::array<Point3, 4> t;
+    for (Point3& p : t) p = {u(rng), u(rng), squash * u(rng)};
+    tets.push_back(t);
+  }
+  tets.push_back({Point3{0, 0, 0}, Point3{1, 0, 0}, Point3{1, 1, 0}, Point3{0, 1, 0}});
+  tets.push_back({Point3{0, 0, 0}, Point3{0, 0, 0}, Point3{1, 1, 0}, Point3{0, 1, 1}});
+  for (const auto& t : tets) {
+    const std::vector<double> all = dihedral_angles_deg(t[0], t[1], t[2], t[3]);
+    const auto [lo, hi] = dihedral_extremes_deg(t[0], t[1], t[2], t[3]);
+    EXPECT_NEAR(lo, *std::min_element(all.begin(), all.end()), 1e-9);
+    EXPECT_NEAR(hi, *std::max_element(all.begin(), all.end()), 1e-9);
+  }
+  const auto [flat_lo, flat_hi] =
+      dihedral_extremes_deg(Point3{0, 0, 0}, Point3{1, 0, 0}, Point3{1, 1, 0}, Point3{0, 1, 0});
+  EXPECT_NEAR(flat_lo, 0, 1e-12);
+  EXPECT_NEAR(flat_hi, 180, 1e-12);
+  EXPECT_EQ(
+      dihedral_extremes_deg(Point3{0, 0, 0}, Point3{0, 0, 0}, Point3{1, 1, 0}, Point3{0, 1, 1})
+          .first,
+      0.0);
 }
 
 TEST(MeshMeasures, EulerCharacteristicOfClosedSurfaces) {

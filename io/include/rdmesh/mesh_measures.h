@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <utility>
 #include <vector>
 
 #include "rdmesh/geometry.h"
@@ -44,6 +45,11 @@ double signed_volume(const Point3& a, const Point3& b, const Point3& c, const Po
 /// at an edge whose adjacent face is degenerate (zero area) is reported as 0.
 std::vector<double> dihedral_angles_deg(const Point3& a, const Point3& b, const Point3& c,
                                         const Point3& d);
+
+/// The smallest and the largest of dihedral_angles_deg(a, b, c, d), found by
+/// comparing the angles without computing them: two arctangents instead of six.
+std::pair<double, double> dihedral_extremes_deg(const Point3& a, const Point3& b, const Point3& c,
+                                                const Point3& d);
 
 /// Circumradius divided by the shortest edge length (sqrt(6)/4 ~ 0.612 for
 /// the regular tetrahedron). +infinity for a flat tetrahedron or a zero-length edge.
