@@ -109,9 +109,17 @@ struct CellInfo {
   /// not yet initialized. Queue entries carry the stamp they saw (CGAL
   /// reuses the memory of destroyed cells).
   std::uint32_t stamp = 0;
-  int label = 0;                ///< SubdomainId of the circumcenter (0 outside, infinite cells)
-  Point3 circumcenter;          ///< finite cells only
-  double squared_radius = 0.0;  ///< finite cells only
+  int label = 0;  ///< SubdomainId of the circumcenter (0 outside, infinite cells)
+  /// Refinement's ball of the cell, finite cells only. Exudation, after
+  /// refinement, neither reads nor maintains it (refinement never resumes).
+  Point3 circumcenter;
+  union {
+    double squared_radius = 0.0;  ///< refinement: of the ball above
+    /// Exudation: cosine of the smallest dihedral angle for a domain cell
+    /// (label != 0, finite), -infinity for the others. The exuder sets it on
+    /// every cell before it reads one, and on every cell it creates.
+    double shape_cosine;
+  };
   std::array<PatchId, 4> facet_patch{};  ///< patch of facet i, or kNotRestricted
   SurfaceCenters surface_center;         ///< center of facet i's surface Delaunay ball
   /// A crossing of facet `crossing_facet`'s dual edge found while labeling this

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "cell_shape.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/number_text.h"
 #include "rdmesh/parallel_for.h"
@@ -40,27 +41,24 @@ void validate(const ExudationOptions& o) {
                      std::to_string(o.max_moves_per_vertex));
 }
 
-double cell_cosine(Cell_handle c) {
-  return max_dihedral_cosine(to_point3(c->vertex(0)->point()), to_point3(c->vertex(1)->point()),
-                             to_point3(c->vertex(2)->point()), to_point3(c->vertex(3)->point()));
-}
-
-bool in_domain(const Triangulation& tr, Cell_handle c) {
-  return c->info().label != 0 && !tr.is_infinite(c);
-}
-
 /// The finite cells in iteration order and the cosine of each domain cell
-/// (-infinity for the others), computed on `threads` threads.
-void domain_cosines(const Triangulation& tr, int threads, std::vector<Cell_handle>& cells,
+/// (-infinity for the others), computed on `threads` threads. `store`: also
+/// stored on every cell as its shape_cosine (the infinite cells' too), which
+/// the exuder's first call does; later calls only measure (the stored shapes
+/// are kept up to date by whoever creates cells, and self_check verifies it).
+void domain_cosines(Triangulation& tr, int threads, bool store, std::vector<Cell_handle>& cells,
                     std::vector<double>& cosines) {
   cells.clear();
   cells.reserve(tr.number_of_finite_cells());
   for (auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c) cells.push_back(c);
   cosines.resize(cells.size());
   parallel_for(cells.size(), threads, [&](std::size_t i) {
-    cosines[i] = cells[i]->info().label != 0 ? cell_cosine(cells[i])
-                                             : -std::numeric_limits<double>::infinity();
+    cosines[i] = stored_shape(tr, cells[i]);
+    if (store) cells[i]->info().shape_cosine = cosines[i];
   });
+  if (!store) return;
+  for (auto c = tr.all_cells_begin(); c != tr.all_cells_end(); ++c)
+    if (tr.is_infinite(c)) c->info().shape_cosine = -std::numeric_limits<double>::infinity();
 }
 
 /// Minimum dihedral angle and histogram over the cells of D|O (`cosines` from domain_cosines).
@@ -97,8 +95,8 @@ class Exuder {
     ExudationStats stats;
     stats.ran = true;
     std::uint32_t next_stamp = prepare();
-    // One pass over the cells gives the figures before and the first queue.
-    domain_cosines(tr_, threads_, cells_, cosines_);
+    // One pass over the cells gives the figures before, the first queue and the stored shapes.
+    domain_cosines(tr_, threads_, /*store=*/true, cells_, cosines_);
     measure(cosines_, stats.min_dihedral_before_deg, stats.histogram_before);
     next_stamp = pump_passes(stats, next_stamp, /*cosines_fresh=*/true);
     if (options_.perturb && !stats.time_limit_reached) {
@@ -118,7 +116,7 @@ class Exuder {
               },
               stats.time_limit_reached);
       DihedralHistogram histogram;
-      domain_cosines(tr_, threads_, cells_, cosines_);
+      domain_cosines(tr_, threads_, /*store=*/false, cells_, cosines_);
       measure(cosines_, stats.min_dihedral_after_perturb_deg, histogram);
       stats.perturb_seconds = elapsed() - t;
       if (!stats.time_limit_reached) {
@@ -126,7 +124,7 @@ class Exuder {
         pump_passes(stats, perturber.next_stamp(), /*cosines_fresh=*/false);
       }
     }
-    domain_cosines(tr_, threads_, cells_, cosines_);
+    domain_cosines(tr_, threads_, /*store=*/false, cells_, cosines_);
     measure(cosines_, stats.min_dihedral_after_deg, stats.histogram_after);
     cells_ = {};
     cosines_ = {};
@@ -213,8 +211,7 @@ class Exuder {
         }
       }
       for (const Cell_handle& c : *created) {
-        if (!in_domain(tr_, c)) continue;
-        const double cosine = cell_cosine(c);
+        const double cosine = c->info().shape_cosine;  // -infinity outside the domain
         if (!(cosine > bound_cosine_)) continue;
         for (int k = 0; k < 4; ++k) {
           dirty_[c->vertex(k)->info().index] = 1;
@@ -266,7 +263,7 @@ class Exuder {
   /// Queues every vertex incident to a domain cell below the current bound
   /// (`cosines_fresh`: cells_ and cosines_ are up to date).
   void requeue(bool cosines_fresh) {
-    if (!cosines_fresh) domain_cosines(tr_, threads_, cells_, cosines_);
+    if (!cosines_fresh) domain_cosines(tr_, threads_, /*store=*/false, cells_, cosines_);
     const std::size_t n = moves_.size();
     queue_ = {};
     dirty_.assign(n, 1);
@@ -285,13 +282,12 @@ class Exuder {
     }
   }
 
-  /// Worst cosine over the domain cells incident to v.
+  /// Worst cosine over the domain cells incident to v (their shape_cosine).
   double worst_cosine(Vertex_handle v, std::vector<Cell_handle>& star) const {
     star.clear();
     tr_.incident_cells(v, std::back_inserter(star));
     double worst = -std::numeric_limits<double>::infinity();
-    for (const Cell_handle& c : star)
-      if (in_domain(tr_, c)) worst = std::max(worst, cell_cosine(c));
+    for (const Cell_handle& c : star) worst = std::max(worst, c->info().shape_cosine);
     return worst;
   }
 
@@ -316,9 +312,13 @@ class Exuder {
   Stopwatch clock_;
 };
 
-void check_invariants(const Triangulation& tr) {
+/// `shapes`: every cell's shape_cosine must be its stored_shape() (after exudation).
+void check_invariants(const Triangulation& tr, bool shapes) {
   if (!tr.is_valid()) throw InternalError("exudation left an invalid regular triangulation");
   for (auto c = tr.all_cells_begin(); c != tr.all_cells_end(); ++c) {
+    if (shapes && !(c->info().shape_cosine == stored_shape(tr, c)))
+      throw InternalError("exudation: a cell's stored shape is not its shape, cell stamp " +
+                          std::to_string(c->info().stamp));
     for (int i = 0; i < 4; ++i) {
       const Cell_handle n = c->neighbor(i);
       const int j = n->index(c);
@@ -343,9 +343,9 @@ ExudationStats exude_slivers(Triangulation& tr, const Criteria& criteria,
                              int threads) {
   validate(options);
   if (tr.dimension() < 3) return {};
-  if (options.self_check) check_invariants(tr);
+  if (options.self_check) check_invariants(tr, /*shapes=*/false);
   ExudationStats stats = Exuder(tr, criteria, options, chains, threads).run();
-  if (options.self_check) check_invariants(tr);
+  if (options.self_check) check_invariants(tr, /*shapes=*/true);
   return stats;
 }
 

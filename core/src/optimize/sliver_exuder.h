@@ -20,8 +20,8 @@
 //    same labelled regions, but a new cell's label is no longer the oracle's
 //    label at its circumcenter, and a restricted facet's dual is no longer
 //    its (weighted) Voronoi edge;
-//  - CellInfo::circumcenter / squared_radius of new cells are their unweighted
-//    circumcenters (as refinement stores them), not their orthospheres;
+//  - CellInfo::circumcenter is not maintained, and every cell's
+//    squared_radius holds its shape_cosine instead (they share storage);
 //  - stamps of new cells are fresh (larger than every stamp before).
 // Hence mesh extraction (labels and facet_patch) works unchanged, but
 // refinement must not resume on the triangulation afterwards.

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "../simplex_geometry.h"
+#include "cell_shape.h"
 #include "rdmesh/errors.h"
 #include "tet_shape.h"
 
@@ -14,11 +15,6 @@ namespace {
 
 Weighted_point weighted(const Point3& p, double w) {
   return Weighted_point(Kernel::Point_3(p.x, p.y, p.z), w);
-}
-
-double cell_cosine(Cell_handle c) {
-  return max_dihedral_cosine(to_point3(c->vertex(0)->point()), to_point3(c->vertex(1)->point()),
-                             to_point3(c->vertex(2)->point()), to_point3(c->vertex(3)->point()));
 }
 
 bool has_restricted_facet(Cell_handle c) {
@@ -116,13 +112,8 @@ double VertexPerturber::move(Vertex_handle v, const Point3& p, int label) {
     CellInfo& info = c->info();
     info.label = tr_.is_infinite(c) ? 0 : label;
     info.facet_patch.fill(kNotRestricted);
-    if (tr_.is_infinite(c)) continue;
-    const Point3 p0 = to_point3(c->vertex(0)->point());
-    info.circumcenter =
-        tet_circumcenter(p0, to_point3(c->vertex(1)->point()), to_point3(c->vertex(2)->point()),
-                         to_point3(c->vertex(3)->point()));
-    info.squared_radius = squared_norm(info.circumcenter - p0);
-    worst = std::max(worst, cell_cosine(c));
+    info.shape_cosine = stored_shape(tr_, c);
+    worst = std::max(worst, info.shape_cosine);
   }
   return worst;
 }

@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "../simplex_geometry.h"
+#include "cell_shape.h"
 #include "cone_hole.h"
 #include "rdmesh/errors.h"
 #include "tet_shape.h"
@@ -43,11 +44,6 @@ double critical_weight(Cell_handle c, const Point3& v) {
   return std::isfinite(crit) ? crit : std::numeric_limits<double>::infinity();
 }
 
-double cell_cosine(Cell_handle c) {
-  return max_dihedral_cosine(to_point3(c->vertex(0)->point()), to_point3(c->vertex(1)->point()),
-                             to_point3(c->vertex(2)->point()), to_point3(c->vertex(3)->point()));
-}
-
 }  // namespace
 
 WeightPump::WeightPump(Triangulation& tr, std::uint32_t first_stamp, CellLimits limits,
@@ -68,10 +64,8 @@ void WeightPump::collect_star(Vertex_handle v, const std::vector<Cell_handle>* s
   } else {
     tr_.incident_cells(v, std::back_inserter(zone_));
     zone_quality_ = -std::numeric_limits<double>::infinity();
-    for (const Cell_handle& c : zone_) {
-      if (c->info().label != 0 && !tr_.is_infinite(c))
-        zone_quality_ = std::max(zone_quality_, cell_cosine(c));
-    }
+    for (const Cell_handle& c : zone_)
+      zone_quality_ = std::max(zone_quality_, c->info().shape_cosine);
   }
   star_size_ = zone_.size();
   for (const Cell_handle& c : zone_) c->tds_data().mark_in_conflict();
@@ -113,7 +107,7 @@ bool WeightPump::absorb(Cell_handle c) {
   }
   c->tds_data().mark_in_conflict();
   zone_.push_back(c);
-  if (c->info().label != 0) zone_quality_ = std::max(zone_quality_, cell_cosine(c));
+  zone_quality_ = std::max(zone_quality_, c->info().shape_cosine);
   return true;
 }
 
@@ -155,7 +149,7 @@ double WeightPump::boundary_quality(Vertex_handle v, double cutoff, bool measure
     for (int i = 0; i < 4; ++i) {
       const Cell_handle n = c->neighbor(i);
       if (n->tds_data().is_in_conflict()) continue;
-      BoundaryFacet f{c, i, 0, false};
+      BoundaryFacet f{c, i, 0, false, static_cast<std::uint32_t>(z)};
       f.label = c->info().facet_patch[i] != kNotRestricted ? c->info().label : n->info().label;
       for (int k = 1; k < 4; ++k)
         f.infinite = f.infinite || tr_.is_infinite(c->vertex((i + k) & 3));
@@ -333,12 +327,24 @@ bool WeightPump::commit(Vertex_handle v, double weight) {
     Cell_handle cell;
     int index;
     int label;
+    double cosine;  ///< the new cell's shape_cosine
   };
   std::vector<Outer> outer;
   outer.reserve(boundary_.size());
+  const Point3 pv = to_point3(v->point());
   for (const BoundaryFacet& f : boundary_) {
     const Cell_handle n = f.inner->neighbor(f.index);
-    outer.push_back({n, n->index(f.inner), f.label});
+    double cosine = -std::numeric_limits<double>::infinity();
+    if (!f.infinite && f.label != 0) {
+      // Measured when pump() rated this zone (it rated it in full), else now.
+      const std::size_t k = 4 * f.zone_index + static_cast<std::size_t>(f.index);
+      cosine = k < facet_cosine_.size() ? facet_cosine_[k] : kUnknownCosine;
+      if (cosine == kUnknownCosine)
+        cosine = max_dihedral_cosine(pv, to_point3(f.inner->vertex((f.index + 1) & 3)->point()),
+                                     to_point3(f.inner->vertex((f.index + 2) & 3)->point()),
+                                     to_point3(f.inner->vertex((f.index + 3) & 3)->point()));
+    }
+    outer.push_back({n, n->index(f.inner), f.label, cosine});
   }
   const BoundaryFacet& start = boundary_.front();
   // Re-triangulate the hole as the cone from v (the same vertex object).
@@ -371,16 +377,8 @@ bool WeightPump::commit(Vertex_handle v, double weight) {
         }
       }
     }
-    if (tr_.is_infinite(c)) {
-      info.label = 0;
-    } else {
-      // The unweighted circumcenter, as refinement stores it (see sliver_exuder.h).
-      const Point3 p0 = to_point3(c->vertex(0)->point());
-      info.circumcenter =
-          tet_circumcenter(p0, to_point3(c->vertex(1)->point()), to_point3(c->vertex(2)->point()),
-                           to_point3(c->vertex(3)->point()));
-      info.squared_radius = squared_norm(info.circumcenter - p0);
-    }
+    if (tr_.is_infinite(c)) info.label = 0;
+    info.shape_cosine = o.cosine;
     new_cells_.push_back(c);
   }
   return true;

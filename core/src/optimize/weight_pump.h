@@ -86,10 +86,11 @@ class WeightPump {
   };
   /// A facet of the boundary of Z and the cell that will replace Z behind it.
   struct BoundaryFacet {
-    Cell_handle inner;  ///< cell of Z
-    int index;          ///< facet index in `inner`
-    int label;          ///< label of the new cell (v + facet)
-    bool infinite;      ///< the facet has the infinite vertex
+    Cell_handle inner;         ///< cell of Z
+    int index;                 ///< facet index in `inner`
+    int label;                 ///< label of the new cell (v + facet)
+    bool infinite;             ///< the facet has the infinite vertex
+    std::uint32_t zone_index;  ///< of `inner` in zone_
   };
   /// An edge of the boundary of Z and one boundary facet holding it.
   struct BoundaryEdge {
