@@ -42,21 +42,24 @@ void validate(const ExudationOptions& o) {
 }
 
 /// The finite cells in iteration order and the cosine of each domain cell
-/// (-infinity for the others), computed on `threads` threads. `store`: also
+/// (-infinity for the others). `store`: computed on `threads` threads and
 /// stored on every cell as its shape_cosine (the infinite cells' too), which
-/// the exuder's first call does; later calls only measure (the stored shapes
-/// are kept up to date by whoever creates cells, and self_check verifies it).
+/// the exuder's first call does; later calls read the stored shapes (whoever
+/// creates a cell stores its shape; self_check verifies them all at the end).
 void domain_cosines(Triangulation& tr, int threads, bool store, std::vector<Cell_handle>& cells,
                     std::vector<double>& cosines) {
   cells.clear();
   cells.reserve(tr.number_of_finite_cells());
   for (auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c) cells.push_back(c);
   cosines.resize(cells.size());
+  if (!store) {
+    for (std::size_t i = 0; i < cells.size(); ++i) cosines[i] = cells[i]->info().shape_cosine;
+    return;
+  }
   parallel_for(cells.size(), threads, [&](std::size_t i) {
     cosines[i] = stored_shape(tr, cells[i]);
-    if (store) cells[i]->info().shape_cosine = cosines[i];
+    cells[i]->info().shape_cosine = cosines[i];
   });
-  if (!store) return;
   for (auto c = tr.all_cells_begin(); c != tr.all_cells_end(); ++c)
     if (tr.is_infinite(c)) c->info().shape_cosine = -std::numeric_limits<double>::infinity();
 }
