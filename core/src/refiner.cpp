@@ -137,8 +137,7 @@ void Refiner::refine(bool stop_on_conflict) {
 void Refiner::zone_found(const std::vector<Cell_handle>& zone) { curve_level_->zone_found(zone); }
 
 void Refiner::inserted(Vertex_handle v) {
-  new_cells_.clear();
-  tr_.incident_cells(v, std::back_inserter(new_cells_));
+  walk_.cells(v, new_cells_);
   const std::uint32_t first_new = complex_.next_stamp();
   // Each new cell's facet opposite v bounds the conflict zone: the cell
   // across it is old, hence labeled.

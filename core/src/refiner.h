@@ -31,6 +31,7 @@
 #include "refinement_scheduler.h"
 #include "restricted_complex.h"
 #include "restricted_curves.h"
+#include "star_walk.h"
 #include "triangulation_types.h"
 
 namespace rdmesh::detail {
@@ -108,6 +109,7 @@ class Refiner final : private InsertionObserver {
   RefinementScheduler scheduler_;
 
   std::vector<Cell_handle> new_cells_;  ///< scratch: the star of the vertex just inserted
+  StarWalk walk_;
   std::chrono::steady_clock::time_point start_time_;
   Deadline deadline_;  ///< read every 256th insertion or refinement step
   std::size_t insertions_since_progress_ = 0;

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "../star_walk.h"
 #include "cell_shape.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/number_text.h"
@@ -286,9 +287,8 @@ class Exuder {
   }
 
   /// Worst cosine over the domain cells incident to v (their shape_cosine).
-  double worst_cosine(Vertex_handle v, std::vector<Cell_handle>& star) const {
-    star.clear();
-    tr_.incident_cells(v, std::back_inserter(star));
+  double worst_cosine(Vertex_handle v, std::vector<Cell_handle>& star) {
+    walk_.cells(v, star);
     double worst = -std::numeric_limits<double>::infinity();
     for (const Cell_handle& c : star) worst = std::max(worst, c->info().shape_cosine);
     return worst;
@@ -307,6 +307,7 @@ class Exuder {
   /// cosine as it was at change worst_version_ (pump passes).
   std::vector<std::uint32_t> star_version_, worst_version_;
   std::vector<double> worst_;
+  StarWalk walk_;
   std::vector<Cell_handle> star_;  ///< process()'s scratch: the star of vertex star_of_ (-1: none)
   int star_of_ = -1;
   std::priority_queue<QueuedVertex> queue_;

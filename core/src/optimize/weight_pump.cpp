@@ -62,7 +62,7 @@ void WeightPump::collect_star(Vertex_handle v, const std::vector<Cell_handle>* s
     zone_.assign(star->begin(), star->end());
     zone_quality_ = star_cosine;
   } else {
-    tr_.incident_cells(v, std::back_inserter(zone_));
+    walk_.cells(v, zone_);
     zone_quality_ = -std::numeric_limits<double>::infinity();
     for (const Cell_handle& c : zone_)
       zone_quality_ = std::max(zone_quality_, c->info().shape_cosine);
@@ -257,6 +257,13 @@ WeightPump::Outcome WeightPump::pump(Vertex_handle v, double max_weight,
   rejecting_ = {};
   facet_cosine_.clear();
   for (std::size_t z = 0; z < star_size_; ++z)
+    __builtin_prefetch(&*zone_[z]->neighbor(zone_[z]->index(v)));
+  for (std::size_t z = 0; z < star_size_; ++z) {
+    const Cell_handle n = zone_[z]->neighbor(zone_[z]->index(v));
+    const Cell_handle c = zone_[z];
+    __builtin_prefetch(&*n->vertex(n->index(c)));
+  }
+  for (std::size_t z = 0; z < star_size_; ++z)
     push_frontier(zone_[z]->neighbor(zone_[z]->index(v)), v);
 
   double best_weight = -1, best_quality = 0;
@@ -275,6 +282,7 @@ WeightPump::Outcome WeightPump::pump(Vertex_handle v, double max_weight,
         stop = true;
         break;
       }
+      for (int i = 0; i < 4; ++i) __builtin_prefetch(&*c->neighbor(i));
       for (int i = 0; i < 4; ++i) push_frontier(c->neighbor(i), v);
     }
     if (stop) break;

@@ -39,6 +39,7 @@
 #include <queue>
 #include <vector>
 
+#include "../star_walk.h"
 #include "../triangulation_types.h"
 #include "chain_edges.h"
 #include "rdmesh/criteria.h"
@@ -162,6 +163,7 @@ class WeightPump {
   std::vector<Cell_handle> exact_cells_;
   std::vector<Triangulation::Facet> exact_facets_;
   std::vector<Cell_handle> new_cells_;
+  StarWalk walk_;
 };
 
 }  // namespace rdmesh::detail
