@@ -59,6 +59,10 @@ class Insertion {
   // Scratch buffers reused by every insertion (no allocation in the loop).
   std::vector<Cell_handle> zone_cells_;
   std::vector<Triangulation::Facet> zone_boundary_;
+  std::vector<Cell_handle> stack_;
+
+  /// find_zone() in dimension 3, from a start cell that may not be in conflict.
+  void conflict_walk(const Weighted_point& p, Cell_handle start);
 };
 
 }  // namespace rdmesh::detail
