@@ -50,6 +50,11 @@ void Insertion::conflict_walk(const Weighted_point& p, Cell_handle start) {
     stack_.pop_back();
     for (int i = 0; i < 4; ++i) __builtin_prefetch(&*c->neighbor(i));
     for (int i = 0; i < 4; ++i) {
+      const Cell_handle n = c->neighbor(i);
+      if (n->tds_data().is_clear())
+        for (int k = 0; k < 4; ++k) __builtin_prefetch(&*n->vertex(k));
+    }
+    for (int i = 0; i < 4; ++i) {
       const Cell_handle test = c->neighbor(i);
       if (test->tds_data().is_in_conflict()) continue;
       if (test->tds_data().is_clear()) {

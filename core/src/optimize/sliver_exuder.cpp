@@ -42,6 +42,9 @@ void validate(const ExudationOptions& o) {
                      std::to_string(o.max_moves_per_vertex));
 }
 
+/// How many cells ahead domain_cosines() prefetches vertices.
+constexpr std::size_t kVertexLookahead = 8;
+
 /// The finite cells in iteration order and the cosine of each domain cell
 /// (-infinity for the others). `store`: computed on `threads` threads and
 /// stored on every cell as its shape_cosine (the infinite cells' too), which
@@ -58,6 +61,9 @@ void domain_cosines(Triangulation& tr, int threads, bool store, std::vector<Cell
     return;
   }
   parallel_for(cells.size(), threads, [&](std::size_t i) {
+    // The vertices lie all over memory: ask for those of a cell a few ahead.
+    if (i + kVertexLookahead < cells.size())
+      for (int k = 0; k < 4; ++k) __builtin_prefetch(&*cells[i + kVertexLookahead]->vertex(k));
     cosines[i] = stored_shape(tr, cells[i]);
     cells[i]->info().shape_cosine = cosines[i];
   });
