@@ -8,6 +8,12 @@
 #include "tet_shape.h"
 
 namespace rdmesh::detail {
+namespace {
+
+/// How many tets ahead the quality pass prefetches points.
+constexpr std::size_t kPointLookahead = 8;
+
+}  // namespace
 
 bool positively_oriented(const Point3& p0, const Point3& p1, const Point3& p2, const Point3& p3) {
   using P = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
@@ -51,7 +57,12 @@ TetTopology::TetTopology(const TetMesh& mesh, int threads)
   alive_.assign(n, 1);
   // The qualities, each a pure function of its tet, on `threads` threads.
   quality_.resize(n);
-  parallel_for(n, threads, [&](std::size_t t) { quality_[t] = tet_quality(tets_[t]); });
+  // The points lie all over memory: ask for those of a tet a few ahead.
+  parallel_for(n, threads, [&](std::size_t t) {
+    if (t + kPointLookahead < n)
+      for (const int v : tets_[t + kPointLookahead]) __builtin_prefetch(&points_[v]);
+    quality_[t] = tet_quality(tets_[t]);
+  });
   // Each vertex's list sized once (a few spare places for the flips to come):
   // growing millions of small lists by doubling costs more than the sweeps.
   std::vector<int> count(points_.size(), 0);
