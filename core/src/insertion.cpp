@@ -23,55 +23,12 @@ bool Insertion::find_zone(const Weighted_point& p, Cell_handle start) {
   zone_cells_.clear();
   zone_boundary_.clear();
   if (tr_.dimension() == 3)
-    conflict_walk(p, start);
+    conflict_walk_.zone(tr_, p, start, zone_cells_, zone_boundary_);
   else
     tr_.find_conflicts(p, start, std::back_inserter(zone_boundary_),
                        std::back_inserter(zone_cells_));
   if (observer_) observer_->zone_found(zone_cells_);
   return !zone_cells_.empty();
-}
-
-void Insertion::conflict_walk(const Weighted_point& p, Cell_handle start) {
-  // Regular_triangulation_3::find_conflicts' depth-first walk, step for step
-  // (the same cells and facets in the same order, the same exact test), but
-  // with a stack kept between calls (CGAL allocates two vectors per call) and
-  // each cell's neighbours prefetched before they are tested: the walk is
-  // bound by memory latency, and the prefetches make its misses overlap.
-  auto in_conflict = [&](Cell_handle c) {
-    return tr_.side_of_power_sphere(c, p, /*perturb=*/true) == CGAL::ON_BOUNDED_SIDE;
-  };
-  if (!in_conflict(start)) return;
-  stack_.clear();
-  stack_.push_back(start);
-  start->tds_data().mark_in_conflict();
-  zone_cells_.push_back(start);
-  do {
-    const Cell_handle c = stack_.back();
-    stack_.pop_back();
-    for (int i = 0; i < 4; ++i) __builtin_prefetch(&*c->neighbor(i));
-    for (int i = 0; i < 4; ++i) {
-      const Cell_handle n = c->neighbor(i);
-      if (n->tds_data().is_clear())
-        for (int k = 0; k < 4; ++k) __builtin_prefetch(&*n->vertex(k));
-    }
-    for (int i = 0; i < 4; ++i) {
-      const Cell_handle test = c->neighbor(i);
-      if (test->tds_data().is_in_conflict()) continue;
-      if (test->tds_data().is_clear()) {
-        if (in_conflict(test)) {
-          stack_.push_back(test);
-          test->tds_data().mark_in_conflict();
-          zone_cells_.push_back(test);
-          continue;
-        }
-        test->tds_data().mark_on_boundary();
-      }
-      zone_boundary_.emplace_back(c, i);
-    }
-  } while (!stack_.empty());
-  for (const Triangulation::Facet& f : zone_boundary_)
-    f.first->neighbor(f.second)->tds_data().clear();
-  for (const Cell_handle& c : zone_cells_) c->tds_data().clear();
 }
 
 Vertex_handle Insertion::insert(const Weighted_point& p, const VertexInfo& info) {

@@ -11,6 +11,7 @@
 #include "restricted_complex.h"
 #include "restricted_curves.h"
 #include "triangulation_types.h"
+#include "triangulation_walks.h"
 
 namespace rdmesh::detail {
 
@@ -59,10 +60,7 @@ class Insertion {
   // Scratch buffers reused by every insertion (no allocation in the loop).
   std::vector<Cell_handle> zone_cells_;
   std::vector<Triangulation::Facet> zone_boundary_;
-  std::vector<Cell_handle> stack_;
-
-  /// find_zone() in dimension 3, from a start cell that may not be in conflict.
-  void conflict_walk(const Weighted_point& p, Cell_handle start);
+  ConflictWalk conflict_walk_;
 };
 
 }  // namespace rdmesh::detail

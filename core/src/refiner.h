@@ -31,8 +31,8 @@
 #include "refinement_scheduler.h"
 #include "restricted_complex.h"
 #include "restricted_curves.h"
-#include "star_walk.h"
 #include "triangulation_types.h"
+#include "triangulation_walks.h"
 
 namespace rdmesh::detail {
 

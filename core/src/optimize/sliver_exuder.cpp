@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "../star_walk.h"
+#include "../triangulation_walks.h"
 #include "cell_shape.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/number_text.h"

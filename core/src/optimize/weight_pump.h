@@ -39,8 +39,8 @@
 #include <queue>
 #include <vector>
 
-#include "../star_walk.h"
 #include "../triangulation_types.h"
+#include "../triangulation_walks.h"
 #include "chain_edges.h"
 #include "rdmesh/criteria.h"
 

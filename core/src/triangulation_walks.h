@@ -1,0 +1,108 @@
+// Private to core/: the two walks through the triangulation that the
+// refinement and the exudation repeat millions of times, each listing exactly
+// what CGAL's own walk lists, in the same order (so that no result changes),
+// but cheaper:
+//  - StarWalk, the cells incident to a vertex, as
+//    Triangulation_3::incident_cells lists them;
+//  - ConflictWalk, the conflict zone of a weighted point and its boundary
+//    facets, as Regular_triangulation_3::find_conflicts lists them.
+// CGAL builds a stack (and find_conflicts two vectors) on each call; these
+// keep theirs between calls. And both walks are bound by memory latency, the
+// cells of a star lying far apart in a mesh of millions: before looking at a
+// cell's neighbours they ask for all of them at once (a prefetch), so that
+// their cache misses overlap instead of following one another.
+#pragma once
+
+#include <vector>
+
+#include "triangulation_types.h"
+
+namespace rdmesh::detail {
+
+/// The star of a vertex (a depth-first walk from v->cell(), each cell once,
+/// in the order it is first reached).
+class StarWalk {
+ public:
+  /// Replaces `out` by the cells incident to v (tr three-dimensional).
+  void cells(Vertex_handle v, std::vector<Cell_handle>& out) {
+    out.clear();
+    const Cell_handle d = v->cell();
+    stack_.clear();
+    stack_.push_back(d);
+    d->tds_data().mark_in_conflict();
+    out.push_back(d);
+    do {
+      const Cell_handle c = stack_.back();
+      stack_.pop_back();
+      for (int i = 0; i < 4; ++i)
+        if (c->vertex(i) != v) __builtin_prefetch(&*c->neighbor(i));
+      for (int i = 0; i < 4; ++i) {
+        if (c->vertex(i) == v) continue;
+        const Cell_handle next = c->neighbor(i);
+        if (!next->tds_data().is_clear()) continue;
+        stack_.push_back(next);
+        next->tds_data().mark_in_conflict();
+        out.push_back(next);
+      }
+    } while (!stack_.empty());
+    for (const Cell_handle& c : out) c->tds_data().clear();
+  }
+
+ private:
+  std::vector<Cell_handle> stack_;
+};
+
+/// The conflict zone of a weighted point in a three-dimensional regular
+/// triangulation: the cells whose orthosphere it is in conflict with (CGAL's
+/// exact, perturbed power test), found depth-first from a start cell in
+/// conflict, and the facets bounding them.
+class ConflictWalk {
+ public:
+  /// Replaces `cells` and `boundary` by the zone of p found from `start`
+  /// (both empty when `start` is not in conflict with p). The boundary facets
+  /// are seen from inside: (cell of the zone, index of the facet).
+  void zone(const Triangulation& tr, const Weighted_point& p, Cell_handle start,
+            std::vector<Cell_handle>& cells, std::vector<Triangulation::Facet>& boundary) {
+    cells.clear();
+    boundary.clear();
+    auto in_conflict = [&](Cell_handle c) {
+      return tr.side_of_power_sphere(c, p, /*perturb=*/true) == CGAL::ON_BOUNDED_SIDE;
+    };
+    if (!in_conflict(start)) return;
+    stack_.clear();
+    stack_.push_back(start);
+    start->tds_data().mark_in_conflict();
+    cells.push_back(start);
+    do {
+      const Cell_handle c = stack_.back();
+      stack_.pop_back();
+      for (int i = 0; i < 4; ++i) __builtin_prefetch(&*c->neighbor(i));
+      for (int i = 0; i < 4; ++i) {
+        const Cell_handle n = c->neighbor(i);
+        if (n->tds_data().is_clear())
+          for (int k = 0; k < 4; ++k) __builtin_prefetch(&*n->vertex(k));
+      }
+      for (int i = 0; i < 4; ++i) {
+        const Cell_handle test = c->neighbor(i);
+        if (test->tds_data().is_in_conflict()) continue;
+        if (test->tds_data().is_clear()) {
+          if (in_conflict(test)) {
+            stack_.push_back(test);
+            test->tds_data().mark_in_conflict();
+            cells.push_back(test);
+            continue;
+          }
+          test->tds_data().mark_on_boundary();
+        }
+        boundary.emplace_back(c, i);
+      }
+    } while (!stack_.empty());
+    for (const Triangulation::Facet& f : boundary) f.first->neighbor(f.second)->tds_data().clear();
+    for (const Cell_handle& c : cells) c->tds_data().clear();
+  }
+
+ private:
+  std::vector<Cell_handle> stack_;
+};
+
+}  // namespace rdmesh::detail
