@@ -7,7 +7,6 @@
 #include <GeomLProp_SLProps.hxx>
 #include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <cmath>
 #include <limits>
 
@@ -325,13 +324,10 @@ double CadOracle::exact_area(PatchId id) const {
 
 std::unique_ptr<CadOracle> load_cad_file(const std::string& path, const CadOptions& options) {
   cad::ReadShape read = cad::read_shape(path, options);
-  cad::PrepDeadline deadline;
-  // Three times the read's: valid parts prepare in seconds, a loaded machine
-  // must not turn one away, and a malformed one once took hours.
-  deadline.seconds = 3 * cad::read_time_limit_seconds(options, path);
-  deadline.at = std::chrono::steady_clock::now() +
-                std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                    std::chrono::duration<double>(deadline.seconds));
+  // Three times the read's, in CPU seconds: valid parts prepare in seconds, a
+  // malformed one once took hours.
+  const auto deadline =
+      cad::PrepDeadline::starting_now(3 * cad::read_time_limit_seconds(options, path));
   return std::make_unique<CadOracle>(cad::build_model(std::move(read), path, deadline));
 }
 

@@ -11,7 +11,6 @@
 // 1.5 plus 0.005 rad). Both are measured, not assumed, and both err on the large side.
 #pragma once
 
-#include <chrono>
 #include <cstddef>
 #include <vector>
 
@@ -38,12 +37,20 @@ struct SurfaceTriangle {
 /// When preparing a read model must end: a valid model's surfaces are followed
 /// in a second or two, a malformed one's (edge tolerances so large that every
 /// (u, v) is near the boundary, where OpenCASCADE's classifier takes
-/// milliseconds a point) could take hours. Default: never.
+/// milliseconds a point) could take hours. The limit is CPU time of the
+/// preparing thread (cpu_time.h), so a loaded machine does not turn a valid
+/// part away. Default: never.
 struct PrepDeadline {
-  std::chrono::steady_clock::time_point at = std::chrono::steady_clock::time_point::max();
-  double seconds = 0;  ///< the limit, for the message
-  /// Throws InputError("preparing the model did not finish within N s ...") once passed.
+  double seconds = 0;    ///< the limit, CPU seconds; 0: none
+  double start_cpu = 0;  ///< thread_cpu_seconds() when preparing began
+  /// Starts the clock of a `seconds` limit (0: none).
+  static PrepDeadline starting_now(double seconds);
+  /// Throws InputError("preparing the model did not finish within N s ...") once
+  /// passed. Reads the clock on one call in 32 (a system call each).
   void check() const;
+
+ private:
+  mutable unsigned calls_ = 0;
 };
 
 /// Builds `f.cells` and appends the face's triangles to `out`. `size` is the

@@ -18,6 +18,7 @@
 #include <new>
 #include <sstream>
 
+#include "cpu_time.h"
 #include "exact_placements.h"
 
 #if defined(__unix__) || defined(__APPLE__)
@@ -261,7 +262,7 @@ void limit(int resource, std::uint64_t soft, std::uint64_t hard) {
 
 void apply_limits(const CadOptions& options, double seconds) {
   limit(RLIMIT_CORE, 0, 0);  // a crash writes no core file
-  // A backstop for a child whose parent is gone: the parent's wall clock decides.
+  // A backstop for a child whose parent is gone: the parent watches the same clock.
   const auto cpu = static_cast<std::uint64_t>(std::ceil(seconds)) + 2;
   limit(RLIMIT_CPU, cpu, cpu + 1);
 #ifndef RDMESH_ASAN
@@ -342,21 +343,34 @@ struct FdGuard {
   }
 };
 
-/// Appends what the child writes to `out` until it closes the pipe (true) or
-/// the deadline passes (false).
-bool drain(int fd, std::string& out, std::chrono::steady_clock::time_point deadline) {
+/// How reading in the child ended, as the parent saw it.
+enum class Drain { closed, out_of_cpu, out_of_wall };
+
+/// Appends what child `pid` writes to `out` until it closes the pipe, has used
+/// `cpu_limit` CPU seconds, or `wall_limit` seconds have passed (a child
+/// waiting without computing). The child's CPU clock is read at least every
+/// 50 ms, and at once when the pipe has news.
+Drain drain(int fd, pid_t pid, std::string& out, double cpu_limit, double wall_limit) {
+  using Clock = std::chrono::steady_clock;
+  const auto wall_end = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                           std::chrono::duration<double>(wall_limit));
   char buffer[1 << 16];
   for (;;) {
-    const auto left =
-        std::chrono::ceil<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
-    if (left.count() <= 0) return false;
+    const double cpu = process_cpu_seconds(pid);
+    if (cpu > cpu_limit) return Drain::out_of_cpu;
+    const auto wall_left = std::chrono::ceil<std::chrono::milliseconds>(wall_end - Clock::now());
+    if (wall_left.count() <= 0) return Drain::out_of_wall;
+    // The child cannot use more CPU than wall time: no need to look sooner.
+    const double cpu_left_ms = cpu < 0 ? 50.0 : std::ceil(1000 * (cpu_limit - cpu));
+    const auto wait_ms = std::min<long long>(
+        {wall_left.count(), 50, static_cast<long long>(std::max(1.0, cpu_left_ms))});
     pollfd p{fd, POLLIN, 0};
-    const int ready = ::poll(&p, 1, static_cast<int>(std::min<long long>(left.count(), 1 << 30)));
-    if (ready < 0 && errno != EINTR) return true;  // cannot watch: reap and judge the status
+    const int ready = ::poll(&p, 1, static_cast<int>(wait_ms));
+    if (ready < 0 && errno != EINTR) return Drain::closed;  // cannot watch: judge the status
     if (ready <= 0) continue;
     const ssize_t n = ::read(fd, buffer, sizeof buffer);
     if (n < 0 && (errno == EINTR || errno == EAGAIN)) continue;
-    if (n <= 0) return true;
+    if (n <= 0) return Drain::closed;
     out.append(buffer, static_cast<std::size_t>(n));
   }
 }
@@ -382,12 +396,11 @@ ReadShape read_in_child(const std::string& path, const std::string& format,
   // Once: the file's size sets it, and the message, the child's CPU limit and
   // the parent's wait must agree.
   const double limit_seconds = time_limit(options, path);
-  const std::string timed_out =
-      cannot + "did not finish within " + seconds(limit_seconds) + " s (malformed file?)";
+  const std::string timed_out = cannot + "did not finish within " + seconds(limit_seconds) +
+                                " s of computing (malformed file?)";
   int fds[2];
   if (::pipe(fds) != 0) return read();  // no isolation possible: read here
   FdGuard in{fds[0]}, out{fds[1]};
-  const auto start = std::chrono::steady_clock::now();
   const pid_t parent = ::getpid();
   const pid_t pid = ::fork();
   if (pid < 0) return read();
@@ -396,10 +409,17 @@ ReadShape read_in_child(const std::string& path, const std::string& format,
   ::close(out.fd);
   out.fd = -1;
   std::string bytes;
-  const auto limit = std::chrono::duration<double>(limit_seconds);
-  if (!drain(in.fd, bytes,
-             start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(limit))) {
-    throw InputError(path, timed_out);
+  // The limit is the child's CPU time; a child waiting without computing
+  // (a blocked read) is stopped after ten times as long plus a minute.
+  const double wall_limit = 10 * limit_seconds + 60;
+  switch (drain(in.fd, pid, bytes, limit_seconds, wall_limit)) {
+    case Drain::out_of_cpu:
+      throw InputError(path, timed_out);
+    case Drain::out_of_wall:
+      throw InputError(path, cannot + "was still waiting after " + seconds(wall_limit) +
+                                 " s without finishing (a file that is never complete?)");
+    case Drain::closed:
+      break;
   }
   // A complete message is the child's answer, whatever its end; else its end tells.
   Message m;

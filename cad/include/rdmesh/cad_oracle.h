@@ -74,11 +74,14 @@ struct CadOptions {
   /// down. The shape comes back in OpenCASCADE's binary format, bit for bit.
   /// false: read in this process (no fork; no protection).
   bool isolate = true;
-  /// Isolated reading: wall-clock seconds the child may take to read, sew,
-  /// heal and check the model (a CPU-time limit a little above it backs it up);
-  /// 0: 10 s plus 20 s per MB of the file. Preparing the read model (its
-  /// surfaces' tessellation), isolated or not, may take three times as long:
-  /// past that, an InputError "preparing the model did not finish within N s".
+  /// Isolated reading: CPU seconds the child may use to read, sew, heal and
+  /// check the model (a child waiting without computing gets ten times as long
+  /// plus a minute of wall-clock time); 0: 10 s plus 20 s per MB of the file.
+  /// Preparing the read model (its surfaces' tessellation), isolated or not,
+  /// may use three times as many CPU seconds: past that, an InputError
+  /// "preparing the model did not finish within N s of computing". CPU time,
+  /// not wall-clock time: whether a file is accepted does not depend on how
+  /// loaded the machine is.
   double read_time_limit = 0;
   /// Isolated reading: how much address space the child may add to what it
   /// inherits, MiB; 0 is half the physical memory. Not applied under
