@@ -4,12 +4,13 @@
 usage: pipeline_bench.py BUILD_DIR [DATA_DIR] [--repeat R] [--large] [--out TABLE.md]
 
 Cases: the unit sphere (samples/sphere.json for rdmesh, an OpenCASCADE sphere
-for Gmsh) at sizes 0.05 and 0.025 (about 150 k and 1.1 M tetrahedra; --large
-adds 0.0125, about 9.5 M), and two shared STEP files (DATA_DIR/step:
-gmsh_Zylkopf.stp and occtsample_ANC101.step) with rdmesh's default sizes and
-Gmsh at the -clmax that gives about as many tets (diagonal / 20, scaled once by
-the cube root of the two counts; rdmesh's CAD sizes also follow curvature and
-thin parts, Gmsh's -clmax alone does not).
+for Gmsh) at rdmesh sizes 0.05 and 0.025 (about 150 k and 1.1 M tetrahedra;
+--large adds 0.0125, about 9.5 M), and two shared STEP files (DATA_DIR/step:
+gmsh_Zylkopf.stp and occtsample_ANC101.step) with rdmesh's default sizes. Gmsh
+runs at the size that gives about as many tets as rdmesh (issue 19 compares at
+the same element count): one calibration run at rdmesh's size (STEP: diagonal /
+20), scaled once by the cube root of the two counts; the case name gives the
+sphere's Gmsh size. The table has both counts, and microseconds per tet.
 
 Each command is the whole run as a user starts it (read, mesh, write a Medit
 .mesh file; rdmesh also writes no report): `rdmesh IN -o OUT.mesh -q --threads
@@ -111,38 +112,70 @@ def md5(path):
     return h.hexdigest()
 
 
+def calibrated_h(args, rd_args, gmsh_run, h, scratch):
+    """Gmsh's size h scaled once by the cube root of the two counts, so that
+    Gmsh makes about as many tets as rdmesh with rd_args (None: rdmesh failed).
+    gmsh_run(h, out) runs Gmsh at size h and returns its exit status."""
+    out = os.path.join(scratch, "calibrate.mesh")
+    p = subprocess.run([args.rdmesh] + rd_args + ["-q", "--threads", "2", "-o", out],
+                       capture_output=True, text=True)
+    if p.returncode != 0:
+        print("%s: rdmesh failed (%s)" % (rd_args[0], p.stderr.strip()), file=sys.stderr)
+        return None
+    target = len(read_medit_tets(out)[1])
+    if gmsh_run(h, out) == 0:
+        got = len(read_medit_tets(out)[1])
+        if got > 0:
+            h *= (got / target) ** (1.0 / 3.0)
+    return h
+
+
 def cases(args, repo, scratch):
+    """Yields (name, rdmesh args, Gmsh args): Gmsh at the size that gives about
+    as many tets as rdmesh (issue 19 compares at the same element count)."""
     sphere = os.path.join(repo, "samples", "sphere.json")
     sizes = [0.05, 0.025] + ([0.0125] if args.large else [])
     for h in sizes:
         geo = os.path.join(scratch, "sphere_%g.geo" % h)
-        with open(geo, "w") as f:
-            f.write('SetFactory("OpenCASCADE");\nSphere(1) = {0, 0, 0, 1};\n'
-                    "Mesh.CharacteristicLengthMax = %r;\nMesh.CharacteristicLengthMin = %r;\n" % (h, h))
-        yield "sphere h=%g" % h, [sphere, "--size", str(h)], [geo]
+
+        def write_geo(size):
+            with open(geo, "w") as f:
+                f.write('SetFactory("OpenCASCADE");\nSphere(1) = {0, 0, 0, 1};\n'
+                        "Mesh.CharacteristicLengthMax = %r;\nMesh.CharacteristicLengthMin = %r;\n"
+                        % (size, size))
+
+        def gmsh_sphere(size, out):
+            write_geo(size)
+            return subprocess.run([args.gmsh, geo, "-3", "-algo", "hxt", "-nt", "2", "-o", out],
+                                  capture_output=True, text=True).returncode
+
+        rd_args = [sphere, "--size", str(h)]
+        gh = calibrated_h(args, rd_args, gmsh_sphere, h, scratch)
+        if gh is None:
+            continue
+        write_geo(gh)
+        yield "sphere h=%g (gmsh %.4g)" % (h, gh), rd_args, [geo]
     for name in ("gmsh_Zylkopf.stp", "occtsample_ANC101.step"):
         path = os.path.join(args.data_dir, "step", name)
         if not os.path.exists(path):
             print("missing %s: skipped" % path, file=sys.stderr)
             continue
-        # Gmsh at the size that gives about as many tets as rdmesh's defaults: from
-        # diagonal / 20, scaled once by the cube root of the two counts.
-        out = os.path.join(scratch, "calibrate.mesh")
-        p = subprocess.run([args.rdmesh, path, "-q", "--threads", "1", "-o", out],
+        # From diagonal / 20 (rdmesh's CAD sizes also follow curvature and thin
+        # parts, Gmsh's -clmax alone does not).
+        out = os.path.join(scratch, "diagonal.mesh")
+        p = subprocess.run([args.rdmesh, path, "-q", "--threads", "2", "-o", out],
                            capture_output=True, text=True)
         if p.returncode != 0:
             print("%s: rdmesh failed (%s): skipped" % (name, p.stderr.strip()), file=sys.stderr)
             continue
-        vertices, tets = read_medit_tets(out)
-        target = len(tets)
+        vertices = read_medit_tets(out)[0]
         h = float(numpy.linalg.norm(vertices.max(axis=0) - vertices.min(axis=0))) / 20
-        p = subprocess.run([args.gmsh, path, "-3", "-algo", "hxt", "-nt", "1", "-clmax", repr(h),
-                            "-o", out], capture_output=True, text=True)
-        if p.returncode == 0:
-            got = len(read_medit_tets(out)[1])
-            if got > 0:
-                h *= (got / target) ** (1.0 / 3.0)
-        yield name, [path], [path, "-clmax", repr(h)]
+        gh = calibrated_h(args, [path], lambda size, out: subprocess.run(
+            [args.gmsh, path, "-3", "-algo", "hxt", "-nt", "2", "-clmax", repr(size), "-o", out],
+            capture_output=True, text=True).returncode, h, scratch)
+        if gh is None:
+            continue
+        yield name, [path], [path, "-clmax", repr(gh)]
 
 
 def main():
@@ -198,14 +231,16 @@ def main():
                 digest = ",".join(sorted(d[:8] for d in digests.get(label, ())))
                 rows.append((name, label, wall, len(tets), min_dihedral_deg(vertices, tets), rss,
                              ratio, digest))
-    lines = ["| case | tool | wall s | tets | min dihedral deg | peak MB | / HXT same threads | md5 |",
-             "|---|---|---:|---:|---:|---:|---:|---|"]
+    lines = ["| case | tool | wall s | tets | us/tet | min dihedral deg | peak MB "
+             "| / HXT same threads | md5 |",
+             "|---|---|---:|---:|---:|---:|---:|---:|---|"]
     for name, label, wall, tets, angle, rss, ratio, digest in rows:
         if wall is None:
-            lines.append("| %s | %s | failed | | | | | |" % (name, label))
+            lines.append("| %s | %s | failed | | | | | | |" % (name, label))
             continue
-        lines.append("| %s | %s | %.2f | %d | %.2f | %.0f | %s | %s |" % (
-            name, label, wall, tets, angle, rss, "%.2f" % ratio if ratio else "", digest))
+        lines.append("| %s | %s | %.2f | %d | %.2f | %.2f | %.0f | %s | %s |" % (
+            name, label, wall, tets, 1e6 * wall / max(tets, 1), angle, rss,
+            "%.2f" % ratio if ratio else "", digest))
     table = "\n".join(lines)
     print(table)
     if args.out:
