@@ -45,7 +45,9 @@ struct ExudationOptions {
   /// After pumping, move the volume vertices of the remaining slivers along
   /// the gradient of their worst dihedral angle (sliver perturbation), only
   /// where the changed region lies inside one subdomain away from the
-  /// boundary, then pump again.
+  /// boundary, then pump again. A move is made only where the new cells are
+  /// the cone from the moved vertex (checked exactly), so the result is the
+  /// same on every call and every run.
   bool perturb = false;
   /// The perturbation treats the vertices of tets below this angle (degrees).
   double perturb_bound_deg = 15;

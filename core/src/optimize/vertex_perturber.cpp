@@ -2,11 +2,14 @@
 #include "vertex_perturber.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "../simplex_geometry.h"
 #include "cell_shape.h"
+#include "cone_hole.h"
 #include "rdmesh/errors.h"
 #include "tet_shape.h"
 
@@ -41,8 +44,37 @@ Point3 VertexPerturber::angle_gradient(Cell_handle c, Vertex_handle v, double h)
   return {g[0], g[1], g[2]};
 }
 
-bool VertexPerturber::movable_to(Vertex_handle v, const Point3& p, int label, double nearest,
-                                 double& worst) {
+namespace {
+
+/// Clears the conflict marks of `cells` when it goes out of scope.
+struct MarkGuard {
+  const std::vector<Cell_handle>& cells;
+  ~MarkGuard() {
+    for (const Cell_handle& c : cells) c->tds_data().clear();
+  }
+};
+
+/// The weighted points of the new cell: c with vertex i replaced by `p`.
+std::array<const Weighted_point*, 4> new_cell(Cell_handle c, int i, const Weighted_point& p) {
+  std::array<const Weighted_point*, 4> q{};
+  for (int k = 0; k < 4; ++k) q[k] = k == i ? &p : &c->vertex(k)->point();
+  return q;
+}
+
+/// `t` lies strictly outside the power sphere of positively oriented `q`
+/// (exact). A cospherical case counts as not regular: the move is then not
+/// made, so CGAL's symbolic perturbation never has to decide it here.
+bool strictly_outside(const std::array<const Weighted_point*, 4>& q, const Weighted_point& t) {
+  return Kernel().power_side_of_oriented_power_sphere_3_object()(*q[0], *q[1], *q[2], *q[3], t) ==
+         CGAL::ON_NEGATIVE_SIDE;
+}
+
+bool vertex_less(Vertex_handle a, Vertex_handle b) { return &*a < &*b; }
+
+}  // namespace
+
+bool VertexPerturber::plan_move(Vertex_handle v, const Point3& p, int label, double nearest,
+                                double& old_worst, double& new_worst) {
   const Weighted_point wp = weighted(p, v->point().weight());
   Triangulation::Locate_type lt;
   int li = 0, lj = 0;
@@ -53,69 +85,122 @@ bool VertexPerturber::movable_to(Vertex_handle v, const Point3& p, int label, do
   facets_.clear();
   tr_.find_conflicts(wp, c, std::back_inserter(facets_), std::back_inserter(conflicts_));
   if (conflicts_.empty()) return false;
-  worst = -std::numeric_limits<double>::infinity();
-  const double min_d2 = 0.25 * nearest * nearest;
-  for (const std::vector<Cell_handle>* cells : {&star_, &conflicts_}) {
-    for (const Cell_handle& z : *cells) {
-      if (tr_.is_infinite(z) || z->info().label != label || has_restricted_facet(z)) return false;
-      for (int k = 0; k < 4; ++k) {
-        const Vertex_handle u = z->vertex(k);
-        if (u != v && squared_norm(to_point3(u->point()) - p) < min_d2) return false;
-      }
-      worst = std::max(worst, cell_cosine(z));
-    }
-  }
-  // No vertex may get hidden: each vertex of a destroyed cell keeps a cell
-  // that is neither incident to v nor in conflict with p.
-  for (const Cell_handle& z : conflicts_) z->tds_data().mark_in_conflict();
-  bool hidden = false;
+  // R: the star, then the cells in conflict that are not in it.
+  region_.assign(star_.begin(), star_.end());
+  const MarkGuard guard{region_};
+  for (const Cell_handle& z : region_) z->tds_data().mark_in_conflict();
   for (const Cell_handle& z : conflicts_) {
-    for (int k = 0; k < 4 && !hidden; ++k) {
+    if (z->tds_data().is_in_conflict()) continue;
+    z->tds_data().mark_in_conflict();
+    region_.push_back(z);
+  }
+  old_worst = -std::numeric_limits<double>::infinity();
+  const double min_d2 = 0.25 * nearest * nearest;
+  for (const Cell_handle& z : region_) {
+    if (tr_.is_infinite(z) || z->info().label != label || has_restricted_facet(z)) return false;
+    for (int k = 0; k < 4; ++k) {
       const Vertex_handle u = z->vertex(k);
-      if (u == v) continue;
-      incident_.clear();
-      tr_.incident_cells(u, std::back_inserter(incident_));
-      hidden = std::none_of(incident_.begin(), incident_.end(), [&](const Cell_handle& x) {
-        return !x->has_vertex(v) && !x->tds_data().is_in_conflict();
-      });
+      if (u != v && squared_norm(to_point3(u->point()) - p) < min_d2) return false;
+    }
+    old_worst = std::max(old_worst, cell_cosine(z));
+  }
+  boundary_.clear();
+  for (const Cell_handle& z : region_) {
+    for (int i = 0; i < 4; ++i) {
+      const Cell_handle n = z->neighbor(i);
+      if (!n->tds_data().is_in_conflict()) boundary_.push_back({z, i, n, n->index(z)});
     }
   }
-  for (const Cell_handle& z : conflicts_) z->tds_data().clear();
-  return !hidden;
+  if (!cone_is_regular(v, wp)) return false;
+  new_worst = -std::numeric_limits<double>::infinity();
+  for (const BoundaryFacet& f : boundary_) {
+    const auto q = new_cell(f.inner, f.index, wp);
+    // As cell_cosine() will see the new cell (CGAL keeps the inner cell's vertex order).
+    new_worst = std::max(new_worst, max_dihedral_cosine(to_point3(*q[0]), to_point3(*q[1]),
+                                                        to_point3(*q[2]), to_point3(*q[3])));
+  }
+  return true;
 }
 
-double VertexPerturber::move(Vertex_handle v, const Point3& p, int label) {
-  const std::uint32_t first_new = next_stamp_;
-  const std::size_t vertices = tr_.number_of_vertices();
-  if (tr_.move_if_no_collision(v, weighted(p, v->point().weight())) != v ||
-      tr_.number_of_vertices() != vertices)
-    throw InternalError(
-        "perturbation: a vertex collided although it was kept away from all others");
-  // New cells have the default stamp 0: collect them from the new star.
-  new_cells_.clear();
-  tr_.incident_cells(v, std::back_inserter(new_cells_));
-  for (const Cell_handle& c : new_cells_) c->info().stamp = next_stamp_++;
-  double worst = -std::numeric_limits<double>::infinity();
-  for (std::size_t k = 0; k < new_cells_.size(); ++k) {
-    const Cell_handle c = new_cells_[k];
-    for (int i = 0; i < 4; ++i) {
-      const Cell_handle n = c->neighbor(i);
-      if (n->info().stamp == 0) {
-        n->info().stamp = next_stamp_++;
-        new_cells_.push_back(n);
-      } else if (n->info().stamp < first_new &&
-                 (n->info().label != label ||
-                  n->info().facet_patch[n->index(c)] != kNotRestricted)) {
-        throw InternalError("perturbation: the re-triangulated region borders another label");
-      }
+bool VertexPerturber::cone_is_regular(Vertex_handle v, const Weighted_point& wp) {
+  edges_.clear();
+  boundary_vertices_.clear();
+  for (const BoundaryFacet& f : boundary_) {
+    const auto q = new_cell(f.inner, f.index, wp);
+    if (CGAL::orientation(q[0]->point(), q[1]->point(), q[2]->point(), q[3]->point()) !=
+        CGAL::POSITIVE)
+      return false;
+    // Regular across the facet that stays: the far vertex of the cell behind it.
+    const Vertex_handle far = f.outer->vertex(f.outer_index);
+    if (!tr_.is_infinite(far) && !strictly_outside(q, far->point())) return false;
+    const Vertex_handle w[3] = {f.inner->vertex((f.index + 1) & 3),
+                                f.inner->vertex((f.index + 2) & 3),
+                                f.inner->vertex((f.index + 3) & 3)};
+    for (int k = 0; k < 3; ++k) {
+      boundary_vertices_.push_back(w[k]);
+      Vertex_handle a = w[k], b = w[(k + 1) % 3];
+      if (vertex_less(b, a)) std::swap(a, b);
+      edges_.push_back({a, b, w[(k + 2) % 3]});
     }
+  }
+  // A closed surface: each edge on exactly two facets. (Address order only
+  // pairs the edges here; the answer does not depend on it.)
+  auto edge_less = [](const std::array<Vertex_handle, 3>& x,
+                      const std::array<Vertex_handle, 3>& y) {
+    if (x[0] != y[0]) return vertex_less(x[0], y[0]);
+    if (x[1] != y[1]) return vertex_less(x[1], y[1]);
+    return vertex_less(x[2], y[2]);
+  };
+  std::sort(edges_.begin(), edges_.end(), edge_less);
+  if (edges_.size() % 2 != 0) return false;
+  for (std::size_t e = 0; e < edges_.size(); e += 2) {
+    const auto &x = edges_[e], &y = edges_[e + 1];
+    if (x[0] != y[0] || x[1] != y[1]) return false;
+    if (e + 2 < edges_.size() && edges_[e + 2][0] == x[0] && edges_[e + 2][1] == x[1])
+      return false;  // a third facet on the edge
+  }
+  // Regular across the new facets (p, a, b): the two new cells on the edge ab,
+  // each against the far vertex of the other.
+  for (std::size_t e = 0; e < edges_.size(); e += 2) {
+    const Vertex_handle a = edges_[e][0], b = edges_[e][1];
+    const Vertex_handle c = edges_[e][2], d = edges_[e + 1][2];
+    for (const auto& [mine, other] : {std::pair{c, d}, std::pair{d, c}}) {
+      // The new cell p + (a, b, mine), positively oriented.
+      std::array<const Weighted_point*, 4> q = {&wp, &a->point(), &b->point(), &mine->point()};
+      if (CGAL::orientation(q[0]->point(), q[1]->point(), q[2]->point(), q[3]->point()) !=
+          CGAL::POSITIVE)
+        std::swap(q[1], q[2]);
+      if (!strictly_outside(q, other->point())) return false;
+    }
+  }
+  // No vertex of R but v may vanish: all lie on the boundary.
+  std::sort(boundary_vertices_.begin(), boundary_vertices_.end(), vertex_less);
+  for (const Cell_handle& z : region_) {
+    for (int k = 0; k < 4; ++k) {
+      const Vertex_handle u = z->vertex(k);
+      if (u != v &&
+          !std::binary_search(boundary_vertices_.begin(), boundary_vertices_.end(), u, vertex_less))
+        return false;
+    }
+  }
+  return true;
+}
+
+void VertexPerturber::move(Vertex_handle v, const Point3& p, int label) {
+  const BoundaryFacet& start = boundary_.front();
+  cone_hole(tr_, region_, start.inner, start.index, v);
+  v->set_point(weighted(p, v->point().weight()));
+  // The new cells, in the order of the boundary facets (the structure's order).
+  new_cells_.clear();
+  for (const BoundaryFacet& f : boundary_) {
+    const Cell_handle c = f.outer->neighbor(f.outer_index);
     CellInfo& info = c->info();
-    info.label = tr_.is_infinite(c) ? 0 : label;
+    info.stamp = next_stamp_++;
+    info.label = label;
     info.facet_patch.fill(kNotRestricted);
     info.shape_cosine = stored_shape(tr_, c);
-    worst = std::max(worst, info.shape_cosine);
+    new_cells_.push_back(c);
   }
-  return worst;
 }
 
 bool VertexPerturber::perturb(Vertex_handle v, double nearest) {
@@ -141,12 +226,11 @@ bool VertexPerturber::perturb(Vertex_handle v, double nearest) {
   const Point3 origin = to_point3(v->point());
   for (const double step : {0.2, 0.1, 0.05, 0.025}) {
     const Point3 p = origin + step * nearest * dir;
-    double destroyed_worst = 0;
-    if (!movable_to(v, p, label, nearest, destroyed_worst)) continue;
-    if (move(v, p, label) < destroyed_worst) return true;
-    move(v, origin, label);  // undo: the same cells come back
-    star_.clear();
-    tr_.incident_cells(v, std::back_inserter(star_));
+    double old_worst = 0, new_worst = 0;
+    if (!plan_move(v, p, label, nearest, old_worst, new_worst)) continue;
+    if (!(new_worst < old_worst)) continue;
+    move(v, p, label);
+    return true;
   }
   return false;
 }
