@@ -21,8 +21,8 @@
 #include <string>
 
 #include "cad_model.h"
+#include "cpu_time.h"
 #include "rdmesh/errors.h"
-#include "rdmesh/stopwatch.h"
 
 namespace rdmesh {
 namespace {
@@ -71,13 +71,14 @@ std::optional<double> CadOracle::curved_thickness(PatchId id) const {
   // A few rays take microseconds on a valid face; on a surface a corrupt
   // control point sent far from its edges (a fuzzed STEP file) each took
   // OpenCASCADE's slow intersection path, for minutes in all.
-  const Stopwatch clock;
+  // CPU time of this thread, so that a loaded machine does not refuse a valid face.
+  const double start = cad::thread_cpu_seconds();
   try {
     for (const Point3& s : m.features.initial_points(id)) {
-      if (clock.seconds() > kThicknessSeconds) {
-        throw InputError("face " + std::to_string(id.value) +
-                         ": measuring the material behind it took over " +
-                         std::to_string(kThicknessSeconds) + " s (a malformed surface?)");
+      if (cad::thread_cpu_seconds() - start > kThicknessSeconds) {
+        throw InputError(
+            "face " + std::to_string(id.value) + ": measuring the material behind it took over " +
+            std::to_string(kThicknessSeconds) + " s of computing (a malformed surface?)");
       }
       const std::optional<LocalShape> shape = local_shape(f, s);
       if (!shape) continue;

@@ -1,5 +1,6 @@
 #include "cli_runner.h"
 
+#include <sys/resource.h>
 #include <sys/wait.h>
 
 #include <array>
@@ -58,5 +59,19 @@ std::string read_file(const std::string& path) {
 std::string source_path(const std::string& relative) {
   return std::string(RDMESH_SOURCE_DIR) + "/" + relative;
 }
+
+namespace {
+
+double cpu_seconds(int who) {
+  rusage u{};
+  if (getrusage(who, &u) != 0) return 0;
+  return static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
+         1e-6 * static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
+}  // namespace
+
+double own_cpu_seconds() { return cpu_seconds(RUSAGE_SELF); }
+double children_cpu_seconds() { return cpu_seconds(RUSAGE_CHILDREN); }
 
 }  // namespace rdmesh::test

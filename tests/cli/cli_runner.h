@@ -30,6 +30,13 @@ class ScratchDir {
 /// Runs `rdmesh ARGS` (ARGS already shell-quoted) with `dir` as working directory.
 CliRun run_cli(const std::string& args, const std::filesystem::path& dir);
 
+/// CPU seconds (user + system) used so far by this process (RUSAGE_SELF), or
+/// by its children that ended and were waited for, their own children
+/// included (RUSAGE_CHILDREN): what a test asserts about a limit in CPU
+/// seconds, which a loaded machine does not change as it changes wall time.
+double own_cpu_seconds();
+double children_cpu_seconds();
+
 /// The bytes of the file at `path` (empty when it cannot be read).
 std::string read_file(const std::string& path);
 
