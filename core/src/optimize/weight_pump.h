@@ -93,15 +93,14 @@ class WeightPump {
     bool infinite;             ///< the facet has the infinite vertex
     std::uint32_t zone_index;  ///< of `inner` in zone_
   };
-  /// An edge of the boundary of Z and one boundary facet holding it.
-  struct BoundaryEdge {
-    Vertex_handle a, b;  ///< &*a < &*b
-    int facet;
-    bool operator<(const BoundaryEdge& o) const {
-      if (a != o.a) return &*a < &*o.a;
-      if (b != o.b) return &*b < &*o.b;
-      return facet < o.facet;
-    }
+  /// An edge of the boundary of Z (&*a < &*b) and the boundary facets holding
+  /// it: a slot of the open-addressing table edges_, occupied when its `gen`
+  /// is the current edge_gen_.
+  struct EdgeSlot {
+    Vertex_handle a, b;
+    int facet[2] = {-1, -1};
+    int count = 0;
+    std::uint32_t gen = 0;
   };
   /// A restricted facet (v, a, b) of the old star, &*a < &*b.
   struct StarFacet {
@@ -124,6 +123,12 @@ class WeightPump {
   /// Validity of the current Z, whose boundary boundary_quality() listed in full.
   Check validate(Vertex_handle v);
   bool has_boundary_edge(Vertex_handle a, Vertex_handle b) const;
+  /// Empties the edge table, with room for `edges` edges.
+  void reset_edges(std::size_t edges);
+  /// The slot of edge ab (&*a < &*b): its own, or the empty one it would take.
+  std::size_t edge_slot(Vertex_handle a, Vertex_handle b) const;
+  /// Records that boundary facet `facet` holds edge ab.
+  void add_edge(Vertex_handle a, Vertex_handle b, int facet);
   void clear_marks();
   bool commit(Vertex_handle v, double weight);
 
@@ -139,7 +144,9 @@ class WeightPump {
   double zone_quality_ = -1;  ///< worst cosine over the domain cells of Z
   std::vector<StarFacet> star_facets_;
   std::vector<BoundaryFacet> boundary_;
-  std::vector<BoundaryEdge> edges_;
+  std::vector<EdgeSlot> edges_;            ///< a power of two of slots
+  std::vector<std::uint32_t> used_edges_;  ///< occupied slots, in order of first use
+  std::uint32_t edge_gen_ = 0;
   std::vector<std::uint32_t> vertex_mark_;  ///< by VertexInfo::index: == mark_ on the boundary
   std::uint32_t mark_ = 0;
   std::uint32_t infinite_mark_ = 0;
