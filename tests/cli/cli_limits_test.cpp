@@ -1,7 +1,6 @@
 // Hostile input and absurd criteria (issue 23): each is refused up front with exit
 // code 2 and one line naming the file, after well under a CPU-second, leaving no file.
 #include <gtest/gtest.h>
-#include <sys/resource.h>
 #include <sys/stat.h>
 
 #include <algorithm>
@@ -37,14 +36,6 @@ std::string rim(const std::string& name, double turns) {
   return R"({"name": ")" + name +
          R"j(", "x": "0.5*cos(t)", "y": "0.5*sin(t)", "z": "0.6", "t": [0, )j" +
          std::to_string(turns * 6.283185307179586) + "]}";
-}
-
-/// User + system CPU seconds of this process's children that have been waited for.
-double children_cpu_seconds() {
-  rusage usage{};
-  getrusage(RUSAGE_CHILDREN, &usage);
-  auto seconds = [](const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); };
-  return seconds(usage.ru_utime) + seconds(usage.ru_stime);
 }
 
 struct Refused {
