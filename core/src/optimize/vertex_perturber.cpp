@@ -61,6 +61,16 @@ std::array<const Weighted_point*, 4> new_cell(Cell_handle c, int i, const Weight
   return q;
 }
 
+/// The vertex of boundary facet `f` that is neither a nor b.
+template <class Facet>
+Vertex_handle third_vertex(const Facet& f, Vertex_handle a, Vertex_handle b) {
+  for (int j = 1; j < 4; ++j) {
+    const Vertex_handle u = f.inner->vertex((f.index + j) & 3);
+    if (u != a && u != b) return u;
+  }
+  return Vertex_handle();
+}
+
 /// `t` lies strictly outside the power sphere of positively oriented `q`
 /// (exact). A cospherical case counts as not regular: the move is then not
 /// made, so CGAL's symbolic perturbation never has to decide it here.
@@ -68,8 +78,6 @@ bool strictly_outside(const std::array<const Weighted_point*, 4>& q, const Weigh
   return Kernel().power_side_of_oriented_power_sphere_3_object()(*q[0], *q[1], *q[2], *q[3], t) ==
          CGAL::ON_NEGATIVE_SIDE;
 }
-
-bool vertex_less(Vertex_handle a, Vertex_handle b) { return &*a < &*b; }
 
 }  // namespace
 
@@ -123,9 +131,10 @@ bool VertexPerturber::plan_move(Vertex_handle v, const Point3& p, int label, dou
 }
 
 bool VertexPerturber::cone_is_regular(Vertex_handle v, const Weighted_point& wp) {
-  edges_.clear();
+  edges_.reset(3 * boundary_.size());
   boundary_vertices_.clear();
-  for (const BoundaryFacet& f : boundary_) {
+  for (std::size_t k = 0; k < boundary_.size(); ++k) {
+    const BoundaryFacet& f = boundary_[k];
     const auto q = new_cell(f.inner, f.index, wp);
     if (CGAL::orientation(q[0]->point(), q[1]->point(), q[2]->point(), q[3]->point()) !=
         CGAL::POSITIVE)
@@ -133,40 +142,24 @@ bool VertexPerturber::cone_is_regular(Vertex_handle v, const Weighted_point& wp)
     // Regular across the facet that stays: the far vertex of the cell behind it.
     const Vertex_handle far = f.outer->vertex(f.outer_index);
     if (!tr_.is_infinite(far) && !strictly_outside(q, far->point())) return false;
-    const Vertex_handle w[3] = {f.inner->vertex((f.index + 1) & 3),
-                                f.inner->vertex((f.index + 2) & 3),
-                                f.inner->vertex((f.index + 3) & 3)};
-    for (int k = 0; k < 3; ++k) {
-      boundary_vertices_.push_back(w[k]);
-      Vertex_handle a = w[k], b = w[(k + 1) % 3];
-      if (vertex_less(b, a)) std::swap(a, b);
-      edges_.push_back({a, b, w[(k + 2) % 3]});
+    for (int j = 1; j < 4; ++j) {
+      boundary_vertices_.push_back(f.inner->vertex((f.index + j) & 3));
+      edges_.add(f.inner->vertex((f.index + j) & 3), f.inner->vertex((f.index + j % 3 + 1) & 3),
+                 static_cast<int>(k));
     }
   }
-  // A closed surface: each edge on exactly two facets. (Address order only
-  // pairs the edges here; the answer does not depend on it.)
-  auto edge_less = [](const std::array<Vertex_handle, 3>& x,
-                      const std::array<Vertex_handle, 3>& y) {
-    if (x[0] != y[0]) return vertex_less(x[0], y[0]);
-    if (x[1] != y[1]) return vertex_less(x[1], y[1]);
-    return vertex_less(x[2], y[2]);
-  };
-  std::sort(edges_.begin(), edges_.end(), edge_less);
-  if (edges_.size() % 2 != 0) return false;
-  for (std::size_t e = 0; e < edges_.size(); e += 2) {
-    const auto &x = edges_[e], &y = edges_[e + 1];
-    if (x[0] != y[0] || x[1] != y[1]) return false;
-    if (e + 2 < edges_.size() && edges_[e + 2][0] == x[0] && edges_[e + 2][1] == x[1])
-      return false;  // a third facet on the edge
-  }
-  // Regular across the new facets (p, a, b): the two new cells on the edge ab,
-  // each against the far vertex of the other.
-  for (std::size_t e = 0; e < edges_.size(); e += 2) {
-    const Vertex_handle a = edges_[e][0], b = edges_[e][1];
-    const Vertex_handle c = edges_[e][2], d = edges_[e + 1][2];
+  // A closed surface: each edge on exactly two facets. And regular across the
+  // new facets (p, a, b): the two new cells on the edge ab, each against the
+  // far vertex of the other.
+  for (std::size_t e = 0; e < edges_.size(); ++e) {
+    const EdgeTable::Edge& edge = edges_[e];
+    if (edge.count != 2) return false;
+    const Vertex_handle c = third_vertex(boundary_[edge.facet[0]], edge.a, edge.b);
+    const Vertex_handle d = third_vertex(boundary_[edge.facet[1]], edge.a, edge.b);
     for (const auto& [mine, other] : {std::pair{c, d}, std::pair{d, c}}) {
       // The new cell p + (a, b, mine), positively oriented.
-      std::array<const Weighted_point*, 4> q = {&wp, &a->point(), &b->point(), &mine->point()};
+      std::array<const Weighted_point*, 4> q = {&wp, &edge.a->point(), &edge.b->point(),
+                                                &mine->point()};
       if (CGAL::orientation(q[0]->point(), q[1]->point(), q[2]->point(), q[3]->point()) !=
           CGAL::POSITIVE)
         std::swap(q[1], q[2]);

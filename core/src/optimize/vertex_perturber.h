@@ -15,7 +15,8 @@
 // triangulation there: the boundary is a closed surface (each edge on two
 // facets) holding every vertex of R but v (none gets hidden), every new cell
 // is positively oriented, and every facet of a new cell is locally regular
-// (CGAL's perturbed power test against the cell across it). Otherwise the
+// (an exact power test against the cell across it, strict: a cospherical case
+// is not a move, so no symbolic perturbation has to decide). Otherwise the
 // move is not made. It is made when the smallest dihedral angle of the new
 // cells, computed before anything changes, strictly exceeds that of the
 // cells of R. Everything here follows the triangulation's structure, never
@@ -24,11 +25,11 @@
 // hole in the address order of vertex handles).
 #pragma once
 
-#include <array>
 #include <cstdint>
 #include <vector>
 
 #include "../triangulation_types.h"
+#include "edge_table.h"
 
 namespace rdmesh::detail {
 
@@ -74,7 +75,7 @@ class VertexPerturber {
   std::vector<Triangulation::Facet> facets_;
   std::vector<Cell_handle> region_;  ///< R: the star of v, then the other cells in conflict
   std::vector<BoundaryFacet> boundary_;
-  std::vector<std::array<Vertex_handle, 3>> edges_;  ///< scratch: (a, b, third) per boundary edge
+  EdgeTable edges_;  ///< the edges of boundary_, with their facets
   std::vector<Vertex_handle> boundary_vertices_;
   std::vector<Cell_handle> new_cells_;
 };

@@ -16,8 +16,6 @@
 namespace rdmesh::detail {
 namespace {
 
-bool vertex_less(Vertex_handle a, Vertex_handle b) { return &*a < &*b; }
-
 /// facet_cosine_'s mark of a cosine not computed yet (cosines are <= 1).
 constexpr double kUnknownCosine = 2.0;
 
@@ -51,7 +49,6 @@ WeightPump::WeightPump(Triangulation& tr, std::uint32_t first_stamp, CellLimits 
     : tr_(tr), next_stamp_(first_stamp), limits_(limits), chains_(chains) {
   zone_.reserve(128);
   boundary_.reserve(256);
-  used_edges_.reserve(512);
 }
 
 void WeightPump::collect_star(Vertex_handle v, const std::vector<Cell_handle>* star,
@@ -132,45 +129,6 @@ void WeightPump::clear_marks() {
   for (const Cell_handle& c : zone_) c->tds_data().clear();
 }
 
-void WeightPump::reset_edges(std::size_t edges) {
-  std::size_t size = 64;
-  while (size < 2 * edges) size *= 2;  // at most half full
-  if (edges_.size() < size) edges_.resize(size);
-  if (++edge_gen_ == 0) {  // wrapped: empty every slot
-    for (EdgeSlot& e : edges_) e.gen = 0;
-    edge_gen_ = 1;
-  }
-  used_edges_.clear();
-}
-
-std::size_t WeightPump::edge_slot(Vertex_handle a, Vertex_handle b) const {
-  // Any hash gives the same answers: it only decides where an edge is kept.
-  const auto x = reinterpret_cast<std::uintptr_t>(&*a) >> 4;
-  const auto y = reinterpret_cast<std::uintptr_t>(&*b) >> 4;
-  const std::uint64_t h = x * 0x9E3779B97F4A7C15ull ^ y * 0xC2B2AE3D27D4EB4Full;
-  const std::size_t mask = edges_.size() - 1;
-  std::size_t i = static_cast<std::size_t>(h >> 32) & mask;
-  while (edges_[i].gen == edge_gen_ && (edges_[i].a != a || edges_[i].b != b)) i = (i + 1) & mask;
-  return i;
-}
-
-void WeightPump::add_edge(Vertex_handle a, Vertex_handle b, int facet) {
-  if (vertex_less(b, a)) std::swap(a, b);
-  EdgeSlot& e = edges_[edge_slot(a, b)];
-  if (e.gen != edge_gen_) {
-    e = {a, b, {facet, -1}, 1, edge_gen_};
-    used_edges_.push_back(static_cast<std::uint32_t>(&e - edges_.data()));
-    return;
-  }
-  if (e.count < 2) e.facet[e.count] = facet;
-  ++e.count;
-}
-
-bool WeightPump::has_boundary_edge(Vertex_handle a, Vertex_handle b) const {
-  if (vertex_less(b, a)) std::swap(a, b);
-  return edges_[edge_slot(a, b)].gen == edge_gen_;
-}
-
 double WeightPump::boundary_quality(Vertex_handle v, double cutoff, bool measure) {
   boundary_.clear();
   const Point3 pv = to_point3(v->point());
@@ -204,7 +162,7 @@ double WeightPump::boundary_quality(Vertex_handle v, double cutoff, bool measure
 }
 
 WeightPump::Check WeightPump::validate(Vertex_handle v) {
-  reset_edges(3 * boundary_.size());
+  edges_.reset(3 * boundary_.size());
   if (++mark_ == 0) {  // wrapped: reset the marks
     std::fill(vertex_mark_.begin(), vertex_mark_.end(), 0);
     mark_ = 1;
@@ -235,7 +193,7 @@ WeightPump::Check WeightPump::validate(Vertex_handle v) {
     }
     for (int k = 0; k < 3; ++k) {
       mark(w[k]) = mark_;
-      add_edge(w[k], w[(k + 1) % 3], static_cast<int>(b));
+      edges_.add(w[k], w[(k + 1) % 3], static_cast<int>(b));
     }
   }
   // No vertex of Z may end up inside it (it would be hidden); no feature edge may be lost.
@@ -250,18 +208,18 @@ WeightPump::Check WeightPump::validate(Vertex_handle v) {
         const Vertex_handle t = c->vertex(l);
         if (tr_.is_infinite(t) || t->info().dim() > FeatureDim::kCurve) continue;
         if (chains_ != nullptr && !chains_->contains(u, t)) continue;
-        if (!has_boundary_edge(u, t)) return Check::kInvalidFromNowOn;
+        if (!edges_.contains(u, t)) return Check::kInvalidFromNowOn;
       }
     }
   }
   // Every restricted facet of the old star must stay a facet.
   for (const StarFacet& f : star_facets_)
-    if (!has_boundary_edge(f.a, f.b)) return Check::kInvalidFromNowOn;
+    if (!edges_.contains(f.a, f.b)) return Check::kInvalidFromNowOn;
   // Each boundary edge ab is held by two boundary facets: the new cells on
   // either side of the new facet (v, a, b). Their labels must agree with the
   // restricted facets of the old star.
-  for (const std::uint32_t slot : used_edges_) {
-    const EdgeSlot& e = edges_[slot];
+  for (std::size_t k = 0; k < edges_.size(); ++k) {
+    const EdgeTable::Edge& e = edges_[k];
     if (e.count != 2) return Check::kInvalid;  // not a closed 2-manifold surface
     const int lx = boundary_[e.facet[0]].label, ly = boundary_[e.facet[1]].label;
     const StarFacet* restricted = nullptr;

@@ -42,6 +42,7 @@
 #include "../triangulation_types.h"
 #include "../triangulation_walks.h"
 #include "chain_edges.h"
+#include "edge_table.h"
 #include "rdmesh/criteria.h"
 
 namespace rdmesh::detail {
@@ -93,15 +94,6 @@ class WeightPump {
     bool infinite;             ///< the facet has the infinite vertex
     std::uint32_t zone_index;  ///< of `inner` in zone_
   };
-  /// An edge of the boundary of Z (&*a < &*b) and the boundary facets holding
-  /// it: a slot of the open-addressing table edges_, occupied when its `gen`
-  /// is the current edge_gen_.
-  struct EdgeSlot {
-    Vertex_handle a, b;
-    int facet[2] = {-1, -1};
-    int count = 0;
-    std::uint32_t gen = 0;
-  };
   /// A restricted facet (v, a, b) of the old star, &*a < &*b.
   struct StarFacet {
     Vertex_handle a, b;
@@ -122,13 +114,6 @@ class WeightPump {
   double boundary_quality(Vertex_handle v, double cutoff, bool measure = true);
   /// Validity of the current Z, whose boundary boundary_quality() listed in full.
   Check validate(Vertex_handle v);
-  bool has_boundary_edge(Vertex_handle a, Vertex_handle b) const;
-  /// Empties the edge table, with room for `edges` edges.
-  void reset_edges(std::size_t edges);
-  /// The slot of edge ab (&*a < &*b): its own, or the empty one it would take.
-  std::size_t edge_slot(Vertex_handle a, Vertex_handle b) const;
-  /// Records that boundary facet `facet` holds edge ab.
-  void add_edge(Vertex_handle a, Vertex_handle b, int facet);
   void clear_marks();
   bool commit(Vertex_handle v, double weight);
 
@@ -144,9 +129,7 @@ class WeightPump {
   double zone_quality_ = -1;  ///< worst cosine over the domain cells of Z
   std::vector<StarFacet> star_facets_;
   std::vector<BoundaryFacet> boundary_;
-  std::vector<EdgeSlot> edges_;            ///< a power of two of slots
-  std::vector<std::uint32_t> used_edges_;  ///< occupied slots, in order of first use
-  std::uint32_t edge_gen_ = 0;
+  EdgeTable edges_;                         ///< the boundary edges of the current Z (validate())
   std::vector<std::uint32_t> vertex_mark_;  ///< by VertexInfo::index: == mark_ on the boundary
   std::uint32_t mark_ = 0;
   std::uint32_t infinite_mark_ = 0;
