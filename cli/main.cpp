@@ -14,6 +14,7 @@
 #include "rdmesh/mesh_run.h"
 #include "rdmesh/mesh_writers.h"
 #include "rdmesh/mesher.h"
+#include "rdmesh/parallel_for.h"
 #include "rdmesh/quality_report.h"
 #include "rdmesh/run_setup.h"
 #include "rdmesh/stopwatch.h"
@@ -90,6 +91,8 @@ int main(int argc, char** argv) {
     return fail(2, (opt.input.empty() ? std::string() : opt.input + ": ") +
                        rdmesh::run::parse_error_message(e, app, "rdmesh"));
   }
+  // A run given more than one core faults its heap in on another one.
+  if (rdmesh::resolve_threads(opt.threads) > 1) rdmesh::cli::start_heap_populator();
   try {
     return mesh_command(opt);
   } catch (const rdmesh::InputError& e) {
