@@ -90,9 +90,13 @@ constexpr auto kIdle = std::chrono::milliseconds(1);
 #define MADV_POPULATE_WRITE 23  // Linux 5.14
 #endif
 
-void raise_frontier(std::uintptr_t end) {
-  std::uintptr_t seen = frontier.load(std::memory_order_relaxed);
-  while (end > seen && !frontier.compare_exchange_weak(seen, end, std::memory_order_relaxed)) {
+// The heap's end as far as it was advised and may be populated (after the
+// advice, so that the populating thread faults huge pages in).
+std::atomic<std::uintptr_t> ready_end{0};
+
+void raise_to(std::atomic<std::uintptr_t>& mark, std::uintptr_t to) {
+  std::uintptr_t seen = mark.load(std::memory_order_relaxed);
+  while (to > seen && !mark.compare_exchange_weak(seen, to, std::memory_order_relaxed)) {
   }
 }
 
@@ -105,7 +109,7 @@ void raise_frontier(std::uintptr_t end) {
 void populate_loop() {
   std::uintptr_t done = populated_end.load(std::memory_order_relaxed);
   for (;;) {
-    const std::uintptr_t heap_end = reinterpret_cast<std::uintptr_t>(sbrk(0)) & ~(kHugePage - 1);
+    const std::uintptr_t heap_end = ready_end.load(std::memory_order_relaxed);
     const std::uintptr_t front = frontier.load(std::memory_order_relaxed) & ~(kHugePage - 1);
     if (done < front) done = front;  // behind the program: it faulted those itself
     const std::uintptr_t want = std::min(heap_end, front + kAhead);
@@ -137,11 +141,12 @@ void after_allocation(std::uintptr_t at, std::size_t size) {
   if (done == 0) return;
   const auto brk = reinterpret_cast<std::uintptr_t>(sbrk(0));
   // The other threads' arenas are mappings far above the heap's end.
-  if (at + size <= brk) raise_frontier(at + size);
+  if (at + size <= brk) raise_to(frontier, at + size);
   const std::uintptr_t end = brk & ~(kHugePage - 1);
   while (end > done) {
     if (advised_end.compare_exchange_weak(done, end, std::memory_order_relaxed)) {
       advise(done, end);
+      raise_to(ready_end, end);
       return;
     }
   }
@@ -168,6 +173,7 @@ void setup_heap() {
   const std::uintptr_t hi = after & ~(kHugePage - 1);
   advise(lo, hi);
   advised_end.store(hi, std::memory_order_relaxed);
+  ready_end.store(hi, std::memory_order_relaxed);
 #endif
 }
 
