@@ -113,7 +113,8 @@ void populate_loop() {
     const std::uintptr_t front = frontier.load(std::memory_order_relaxed) & ~(kHugePage - 1);
     if (done < front) done = front;  // behind the program: it faulted those itself
     const std::uintptr_t want = std::min(heap_end, front + kAhead);
-    if (done >= want) {
+    // No block seen in the heap yet (front 0): nothing to be ahead of.
+    if (front == 0 || done >= want) {
       std::this_thread::sleep_for(kIdle);
       continue;
     }
