@@ -142,10 +142,12 @@ bool VertexPerturber::cone_is_regular(Vertex_handle v, const Weighted_point& wp)
     // Regular across the facet that stays: the far vertex of the cell behind it.
     const Vertex_handle far = f.outer->vertex(f.outer_index);
     if (!tr_.is_infinite(far) && !strictly_outside(q, far->point())) return false;
-    for (int j = 1; j < 4; ++j) {
-      boundary_vertices_.push_back(f.inner->vertex((f.index + j) & 3));
-      edges_.add(f.inner->vertex((f.index + j) & 3), f.inner->vertex((f.index + j % 3 + 1) & 3),
-                 static_cast<int>(k));
+    const Vertex_handle w[3] = {f.inner->vertex((f.index + 1) & 3),
+                                f.inner->vertex((f.index + 2) & 3),
+                                f.inner->vertex((f.index + 3) & 3)};
+    for (int j = 0; j < 3; ++j) {
+      boundary_vertices_.push_back(w[j]);
+      edges_.add(w[j], w[(j + 1) % 3], static_cast<int>(k));
     }
   }
   // A closed surface: each edge on exactly two facets. And regular across the
