@@ -72,10 +72,14 @@ constexpr std::uintptr_t kPage = 4096;
 
 // The heap's end as far as it was advised; 0 until setup_heap() ran.
 std::atomic<std::uintptr_t> advised_end{0};
+// The same end, raised only once the advice was given: as far as the
+// populating thread may go (so that it faults huge pages in).
+std::atomic<std::uintptr_t> ready_end{0};
 // The highest end of a block operator new took from the heap: about where
 // malloc's free top begins, the next memory to be written.
 std::atomic<std::uintptr_t> frontier{0};
-// How far the populating thread has faulted the heap in; 0: no thread.
+// Whether the populating thread was started, and how far it has faulted the heap in.
+std::atomic<bool> populator_started{false};
 std::atomic<std::uintptr_t> populated_end{0};
 // The kernel refused MADV_POPULATE_WRITE (before Linux 5.14): the thread stopped.
 std::atomic<bool> populate_refused{false};
@@ -90,10 +94,6 @@ constexpr auto kIdle = std::chrono::milliseconds(1);
 #define MADV_POPULATE_WRITE 23  // Linux 5.14
 #endif
 
-// The heap's end as far as it was advised and may be populated (after the
-// advice, so that the populating thread faults huge pages in).
-std::atomic<std::uintptr_t> ready_end{0};
-
 void raise_to(std::atomic<std::uintptr_t>& mark, std::uintptr_t to) {
   std::uintptr_t seen = mark.load(std::memory_order_relaxed);
   while (to > seen && !mark.compare_exchange_weak(seen, to, std::memory_order_relaxed)) {
@@ -107,7 +107,7 @@ void raise_to(std::atomic<std::uintptr_t>& mark, std::uintptr_t to) {
 // writing: it never changes what the program reads. Stops for good if the
 // kernel does not know it.
 void populate_loop() {
-  std::uintptr_t done = populated_end.load(std::memory_order_relaxed);
+  std::uintptr_t done = 0;
   for (;;) {
     const std::uintptr_t heap_end = ready_end.load(std::memory_order_relaxed);
     const std::uintptr_t front = frontier.load(std::memory_order_relaxed) & ~(kHugePage - 1);
@@ -188,9 +188,7 @@ std::uintptr_t heap_frontier() {
 
 std::uintptr_t heap_populated_end() {
 #ifdef RDMESH_HUGE_PAGE_HEAP
-  return populate_refused.load(std::memory_order_relaxed)
-             ? 0
-             : populated_end.load(std::memory_order_relaxed);
+  return populated_end.load(std::memory_order_relaxed);
 #else
   return 0;
 #endif
@@ -207,7 +205,7 @@ bool heap_populator_refused() {
 void start_heap_populator() {
 #ifdef RDMESH_HUGE_PAGE_HEAP
   if (advised_end.load(std::memory_order_relaxed) == 0) return;  // setup_heap() did not apply
-  if (populated_end.exchange(1, std::memory_order_relaxed) != 0) return;  // running already
+  if (populator_started.exchange(true, std::memory_order_relaxed)) return;  // running already
   std::thread(populate_loop).detach();
 #endif
 }
