@@ -62,6 +62,19 @@
 
 namespace rdmesh::cli {
 
+namespace {
+// What the tests read (heap_frontier() and the others); they stay 0 and false
+// where the heap setup does not apply.
+
+// The highest end of a block operator new took from the heap: about where
+// malloc's free top begins, the next memory to be written.
+std::atomic<std::uintptr_t> frontier{0};
+// How far the populating thread has faulted the heap in.
+std::atomic<std::uintptr_t> populated_end{0};
+// The kernel refused MADV_POPULATE_WRITE (before Linux 5.14): the thread stopped.
+std::atomic<bool> populate_refused{false};
+}  // namespace
+
 #ifdef RDMESH_HUGE_PAGE_HEAP
 namespace {
 
@@ -75,14 +88,8 @@ std::atomic<std::uintptr_t> advised_end{0};
 // The same end, raised only once the advice was given: as far as the
 // populating thread may go (so that it faults huge pages in).
 std::atomic<std::uintptr_t> ready_end{0};
-// The highest end of a block operator new took from the heap: about where
-// malloc's free top begins, the next memory to be written.
-std::atomic<std::uintptr_t> frontier{0};
-// Whether the populating thread was started, and how far it has faulted the heap in.
+// Whether the populating thread was started.
 std::atomic<bool> populator_started{false};
-std::atomic<std::uintptr_t> populated_end{0};
-// The kernel refused MADV_POPULATE_WRITE (before Linux 5.14): the thread stopped.
-std::atomic<bool> populate_refused{false};
 
 /// The populating thread keeps the heap faulted in this far past the frontier.
 constexpr std::uintptr_t kAhead = std::uintptr_t{8} << 20;
@@ -178,29 +185,9 @@ void setup_heap() {
 #endif
 }
 
-std::uintptr_t heap_frontier() {
-#ifdef RDMESH_HUGE_PAGE_HEAP
-  return frontier.load(std::memory_order_relaxed);
-#else
-  return 0;
-#endif
-}
-
-std::uintptr_t heap_populated_end() {
-#ifdef RDMESH_HUGE_PAGE_HEAP
-  return populated_end.load(std::memory_order_relaxed);
-#else
-  return 0;
-#endif
-}
-
-bool heap_populator_refused() {
-#ifdef RDMESH_HUGE_PAGE_HEAP
-  return populate_refused.load(std::memory_order_relaxed);
-#else
-  return false;
-#endif
-}
+std::uintptr_t heap_frontier() { return frontier.load(std::memory_order_relaxed); }
+std::uintptr_t heap_populated_end() { return populated_end.load(std::memory_order_relaxed); }
+bool heap_populator_refused() { return populate_refused.load(std::memory_order_relaxed); }
 
 void start_heap_populator() {
 #ifdef RDMESH_HUGE_PAGE_HEAP
