@@ -111,6 +111,12 @@ struct LaneSlots : Base {
   }
 };
 
+/// LaneSlots over the ordinary Compact_container of T (its allocator named, so
+/// that it is not one of the specializations below).
+template <class T>
+using LaneContainer =
+    LaneSlots<T, CGAL::Compact_container<T, std::allocator<T>, CGAL::Default, CGAL::Default>>;
+
 }  // namespace
 
 namespace CGAL {
@@ -119,33 +125,20 @@ namespace CGAL {
 template <class Gt, class Cb>
 class Compact_container<Triangulation_cell_base_with_info_3<CellData, Gt, Cb>, Default, Default,
                         Default>
-    : public LaneSlots<
-          Triangulation_cell_base_with_info_3<CellData, Gt, Cb>,
-          Compact_container<Triangulation_cell_base_with_info_3<CellData, Gt, Cb>,
-                            std::allocator<Triangulation_cell_base_with_info_3<CellData, Gt, Cb>>,
-                            Default, Default>> {
+    : public LaneContainer<Triangulation_cell_base_with_info_3<CellData, Gt, Cb>> {
+  using Base = LaneContainer<Triangulation_cell_base_with_info_3<CellData, Gt, Cb>>;
+
  public:
-  using LaneSlots<
-      Triangulation_cell_base_with_info_3<CellData, Gt, Cb>,
-      Compact_container<Triangulation_cell_base_with_info_3<CellData, Gt, Cb>,
-                        std::allocator<Triangulation_cell_base_with_info_3<CellData, Gt, Cb>>,
-                        Default, Default>>::LaneSlots;
+  using Base::Base;
 };
 template <class Gt, class Vb>
 class Compact_container<Triangulation_vertex_base_with_info_3<VertexData, Gt, Vb>, Default, Default,
                         Default>
-    : public LaneSlots<
-          Triangulation_vertex_base_with_info_3<VertexData, Gt, Vb>,
-          Compact_container<
-              Triangulation_vertex_base_with_info_3<VertexData, Gt, Vb>,
-              std::allocator<Triangulation_vertex_base_with_info_3<VertexData, Gt, Vb>>, Default,
-              Default>> {
+    : public LaneContainer<Triangulation_vertex_base_with_info_3<VertexData, Gt, Vb>> {
+  using Base = LaneContainer<Triangulation_vertex_base_with_info_3<VertexData, Gt, Vb>>;
+
  public:
-  using LaneSlots<
-      Triangulation_vertex_base_with_info_3<VertexData, Gt, Vb>,
-      Compact_container<Triangulation_vertex_base_with_info_3<VertexData, Gt, Vb>,
-                        std::allocator<Triangulation_vertex_base_with_info_3<VertexData, Gt, Vb>>,
-                        Default, Default>>::LaneSlots;
+  using Base::Base;
 };
 }  // namespace CGAL
 
