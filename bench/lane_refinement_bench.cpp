@@ -242,6 +242,14 @@ class Refinement {
     return finish(t0, seam.inserted);
   }
 
+  /// --check: CGAL's validity test of the triangulation (outside the timings).
+  void check() const {
+    if (check_triangulation && !tr_.is_valid()) {
+      std::fprintf(stderr, "invalid triangulation\n");
+      std::exit(1);
+    }
+  }
+
  private:
   struct Entry {
     Cell_handle cell;
@@ -332,8 +340,9 @@ class Refinement {
     return ok;  // the zone stays marked in conflict, as insert_in_hole wants it
   }
 
-  /// Refines the cells of `queue` (LIFO) and what they make; entries that
-  /// leave the lane, or find it out of slots, go to its deferred list.
+  /// Refines the cells of `queue` (LIFO) and what they make; entries whose zone
+  /// leaves the lane go to its deferred list. A lane out of slots stops with the
+  /// entry back on `queue`, for the next round.
   void drain(Lane& lane, Lane* const* lanes, std::vector<Entry>& queue) {
     while (!queue.empty()) {
       const Entry e = queue.back();
@@ -391,15 +400,6 @@ class Refinement {
 
   Tr tr_;
   double h2_, x0_, x1_;
-
- public:
-  /// --check: CGAL's validity test of the triangulation (outside the timings).
-  void check() const {
-    if (check_triangulation && !tr_.is_valid()) {
-      std::fprintf(stderr, "invalid triangulation\n");
-      std::exit(1);
-    }
-  }
 };
 
 /// The cube refined sequentially or in lanes, on a triangulation with the Tag's containers.
