@@ -1,5 +1,6 @@
 #include "progress_display.h"
 
+#include <pthread.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -19,12 +20,60 @@ double delay_from_environment() {
 
 }  // namespace
 
+/// The displays whose thread runs, each locked by the fork handler across fork().
+/// Lock order: the list's mutex, then each display's.
+struct ForkQuiet {
+  static std::mutex& list_mutex() {
+    static std::mutex m;
+    return m;
+  }
+  static ProgressDisplay*& head() {
+    static ProgressDisplay* h = nullptr;
+    return h;
+  }
+  static void prepare() {
+    list_mutex().lock();
+    for (ProgressDisplay* d = head(); d != nullptr; d = d->next_) d->mutex_.lock();
+  }
+  // In the parent and in the child alike: the thread that forked holds the locks.
+  static void release() {
+    for (ProgressDisplay* d = head(); d != nullptr; d = d->next_) d->mutex_.unlock();
+    list_mutex().unlock();
+  }
+  static void add(ProgressDisplay* d) {
+    static const int installed = ::pthread_atfork(&prepare, &release, &release);
+    (void)installed;  // without the handler (ENOMEM) the display still works
+    std::lock_guard<std::mutex> lock(list_mutex());
+    d->next_ = head();
+    head() = d;
+  }
+  static void remove(ProgressDisplay* d) {
+    std::lock_guard<std::mutex> lock(list_mutex());
+    for (ProgressDisplay** p = &head(); *p != nullptr; p = &(*p)->next_) {
+      if (*p == d) {
+        *p = d->next_;
+        return;
+      }
+    }
+  }
+};
+
 ProgressDisplay::ProgressDisplay(bool enabled)
     : enabled_(enabled), tty_(::isatty(STDERR_FILENO) != 0), delay_(delay_from_environment()) {
-  if (enabled_) thread_ = std::thread([this] { run(); });
+  if (!enabled_) return;
+  thread_ = std::thread([this] { run(); });
+  // A thread that is starting allocates (its thread-local storage, the
+  // sanitizer's bookkeeping) outside the display's lock: wait until it is done.
+  std::unique_lock<std::mutex> lock(mutex_);
+  wake_.wait(lock, [this] { return running_; });
+  lock.unlock();
+  ForkQuiet::add(this);
 }
 
-ProgressDisplay::~ProgressDisplay() { stop(false); }
+ProgressDisplay::~ProgressDisplay() {
+  stop(false);
+  if (enabled_) ForkQuiet::remove(this);
+}
 
 double ProgressDisplay::elapsed_locked() const {
   return std::chrono::duration<double>(Clock::now() - start_).count();
@@ -109,6 +158,8 @@ void ProgressDisplay::print_locked() {
 
 void ProgressDisplay::run() {
   std::unique_lock<std::mutex> lock(mutex_);
+  running_ = true;
+  wake_.notify_all();
   while (!stopping_) {
     wake_.wait_for(lock, std::chrono::milliseconds(tty_ ? 200 : 500));
     if (!stopping_) print_locked();

@@ -4,6 +4,13 @@
 // is rewritten a few times a second; otherwise (logs, CI) a line every 5 s. A
 // phase that took longer than the delay ends with a line "PHASE: done in T s".
 // RDMESH_PROGRESS_DELAY (seconds, default 1) sets the delay; 0 shows every phase.
+//
+// The display's thread is quiet whenever the process forks (reading a CAD file
+// forks a child that reads it): the constructor returns once the thread has
+// started, and a fork handler holds the display's lock across fork(), so that the
+// thread is not inside an allocation or a print when the child is made. An
+// allocator that is not fork-safe (the sanitizers') would otherwise leave the
+// child waiting forever on a lock taken by a thread the child does not have.
 #pragma once
 
 #include <chrono>
@@ -35,6 +42,7 @@ class ProgressDisplay {
 
  private:
   using Clock = std::chrono::steady_clock;
+  friend struct ForkQuiet;
   void stop(bool completed);
   void run();
   void end_phase_locked();
@@ -47,9 +55,11 @@ class ProgressDisplay {
   std::mutex mutex_;
   std::condition_variable wake_;
   std::thread thread_;
+  bool running_ = false;  ///< the thread has started and waits on `wake_`
   bool stopping_ = false;
-  std::string phase_;   ///< empty: no phase running
-  std::string detail_;  ///< counts of the running phase
+  ProgressDisplay* next_ = nullptr;  ///< the next live display with a thread
+  std::string phase_;                ///< empty: no phase running
+  std::string detail_;               ///< counts of the running phase
   Clock::time_point start_;
   double last_print_ = -1;       ///< elapsed time of the phase's last line, -1 = none
   std::size_t line_length_ = 0;  ///< of the rewritten terminal line

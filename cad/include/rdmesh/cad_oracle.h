@@ -72,7 +72,11 @@ struct CadOptions {
   /// a crash, an endless loop or a runaway allocation of OpenCASCADE's reader
   /// on a malformed file becomes an InputError instead of taking the host
   /// down. The shape comes back in OpenCASCADE's binary format, bit for bit.
-  /// false: read in this process (no fork; no protection).
+  /// false: read in this process (no fork; no protection). With glibc's
+  /// malloc the host may have other threads running; under a sanitizer's
+  /// allocator, which is not fork-safe, a host thread allocating at the moment
+  /// of fork() leaves the child waiting on its lock (until the wall-clock limit
+  /// below): keep other threads quiet while reading, or set false.
   bool isolate = true;
   /// Isolated reading: CPU seconds the child may use to read, sew, heal and
   /// check the model (a child waiting without computing gets ten times as long
