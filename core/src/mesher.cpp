@@ -227,7 +227,8 @@ MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& given,
   }
   if (improvement.enabled && !options.surface_only) {
     announce(options, "improving the tetrahedra");
-    result.improvement = improve_tets(result.mesh, improvement, {&oracle, criteria.facet_distance});
+    result.improvement = improve_tets(result.mesh, improvement,
+                                      {&oracle, criteria.facet_distance, criteria.edge_size});
   }
   return result;
 }

@@ -7,7 +7,8 @@
 // moved vertex lies either on exactly one patch (on no feature edge or corner)
 // and on that patch within the oracle's tolerance, or inside one chain of
 // feature edges of one curve and on that curve within the tolerance, with the
-// midpoints of its two feature edges within the facet distance of the curve;
+// midpoints of its two feature edges within the facet distance of the curve
+// and each of them no longer than twice the edge size (R2) or than before;
 // no corner moves; the triangles, feature edges and corners are the same,
 // every tetrahedron is positively oriented, each solid's volume moves by less
 // than the facet distance times the area of the moved triangles and passes the
@@ -53,6 +54,7 @@ TEST_P(BoundaryMovesCad, RaiseTheSmallestAngleAndKeepTheModel) {
   const auto oracle = load_cad_file(path);
   const Criteria criteria = default_criteria(oracle->bounding_box());
   ASSERT_TRUE(criteria.facet_distance.is_uniform());
+  ASSERT_TRUE(criteria.edge_size.is_uniform());
   const double d = criteria.facet_distance.constant;
   MeshOptions options;
   options.improvement.enabled = false;
@@ -62,9 +64,10 @@ TEST_P(BoundaryMovesCad, RaiseTheSmallestAngleAndKeepTheModel) {
   TetImprovementOptions no_moves;
   no_moves.boundary_moves = false;
   const TetImprovementStats f =
-      improve_tets(fixed, no_moves, {oracle.get(), criteria.facet_distance});
+      improve_tets(fixed, no_moves, {oracle.get(), criteria.facet_distance, criteria.edge_size});
   TetMesh moved = plain;
-  const TetImprovementStats s = improve_tets(moved, {}, {oracle.get(), criteria.facet_distance});
+  const TetImprovementStats s =
+      improve_tets(moved, {}, {oracle.get(), criteria.facet_distance, criteria.edge_size});
   std::printf(
       "%s: min dihedral %.2f -> %.2f (fixed boundary) / %.2f (%zu moves along patches, %zu along "
       "curves)\n",
@@ -122,7 +125,14 @@ TEST_P(BoundaryMovesCad, RaiseTheSmallestAngleAndKeepTheModel) {
       return distance(curve.point(curve.closest(x, info.t_begin, info.t_end)), x);
     };
     EXPECT_LE(gap(p), oracle->tolerance()) << "vertex " << v;
-    for (const int w : chain[v]) EXPECT_LE(gap(0.5 * (p + moved.vertices[w])), d) << v << "-" << w;
+    for (const int w : chain[v]) {
+      EXPECT_LE(gap(0.5 * (p + moved.vertices[w])), d) << v << "-" << w;
+      // R2: half a feature edge within the edge size, or no longer than before the moves.
+      EXPECT_LE(
+          distance(p, moved.vertices[w]),
+          std::max(2 * criteria.edge_size.constant, distance(plain.vertices[v], plain.vertices[w])))
+          << v << "-" << w;
+    }
   }
   EXPECT_GT(slid.size(), on_curves);
   EXPECT_GT(on_curves, 0u);
@@ -153,7 +163,7 @@ TEST_P(BoundaryMovesCad, RaiseTheSmallestAngleAndKeepTheModel) {
             std::max(d, q_plain.boundary_max_distance) + oracle->tolerance());
 
   TetMesh again = plain;
-  (void)improve_tets(again, {}, {oracle.get(), criteria.facet_distance});
+  (void)improve_tets(again, {}, {oracle.get(), criteria.facet_distance, criteria.edge_size});
   EXPECT_EQ(again.vertices, moved.vertices);
   EXPECT_EQ(again.tets, moved.tets);
 }

@@ -23,6 +23,8 @@
 // index), unless a time limit stops it.
 #pragma once
 
+#include <limits>
+
 #include "rdmesh/geometry.h"
 #include "rdmesh/optimization.h"
 #include "rdmesh/oracle.h"
@@ -30,11 +32,15 @@
 
 namespace rdmesh {
 
-/// The exact surface the mesh's triangles follow: the oracle it was made from
-/// and the criteria's facet distance. Without an oracle no boundary vertex moves.
+/// The exact surface the mesh's triangles follow: the oracle it was made from,
+/// the criteria's facet distance, and their edge size (R2: half a feature edge
+/// <= edge_size at its midpoint; a vertex sliding along a curve never makes a
+/// feature edge break it, or longer if it already did; default: no bound).
+/// Without an oracle no boundary vertex moves.
 struct BoundarySurface {
   const DomainOracle* oracle = nullptr;
   ScalarField facet_distance;
+  ScalarField edge_size = ScalarField::uniform(std::numeric_limits<double>::infinity());
 };
 
 /// Improves `mesh` in place (a first-order, unpartitioned mesh with positively

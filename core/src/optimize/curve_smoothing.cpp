@@ -72,14 +72,20 @@ bool smooth_on_curve(TetTopology& topo, const PatchSurface& surface,
     path.push_back({best_p, best_t});
   }
   // The last position whose triangles and feature edges stay within the facet
-  // distance of their patches and curve.
+  // distance of their patches and curve, and whose feature edges keep R2's
+  // size (or get no longer, where they broke it before).
   const auto edge_near = [&](const Point3& p, int w) {
     const Point3 m = 0.5 * (p + topo.point(w));
     return distance(curve.point(curve.closest(m, ta, tb)), m) <= surface.facet_distance(m);
   };
+  const auto edge_short = [&](const Point3& p, int w) {
+    const double after = distance(p, topo.point(w));
+    return after <= 2 * surface.edge_size(0.5 * (p + topo.point(w))) ||
+           after <= distance(topo.point(v), topo.point(w));
+  };
   for (auto p = path.rbegin(); p != path.rend(); ++p) {
-    if (edge_near(p->first, a) && edge_near(p->first, b) &&
-        surface.near_surface(topo, v, p->first)) {
+    if (edge_near(p->first, a) && edge_near(p->first, b) && edge_short(p->first, a) &&
+        edge_short(p->first, b) && surface.near_surface(topo, v, p->first)) {
       topo.move(v, p->first);
       parameters[static_cast<std::size_t>(v)] = p->second;
       return true;

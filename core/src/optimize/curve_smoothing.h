@@ -9,7 +9,9 @@
 // every tetrahedron around it positive and their smallest angle strictly
 // higher, its triangles' normals within kMaxNormalTurnDeg of the input's,
 // their samples within the facet distance of their own patches; and the
-// midpoints of its two feature edges within the facet distance of the curve.
+// midpoints of its two feature edges within the facet distance of the curve,
+// and each feature edge at most twice the edge size at its midpoint (R2), or
+// no longer than before where it was longer already.
 #pragma once
 
 #include <vector>

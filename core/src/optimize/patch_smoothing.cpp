@@ -22,9 +22,10 @@ Point3 area_normal(const std::array<Point3, 3>& q) { return cross(q[1] - q[0], q
 }  // namespace
 
 PatchSurface::PatchSurface(const TetMesh& mesh, const DomainOracle& oracle,
-                           const ScalarField& facet_distance)
+                           const ScalarField& facet_distance, const ScalarField& edge_size)
     : oracle_(oracle),
       facet_distance_(facet_distance),
+      edge_size_(edge_size),
       triangles_(mesh.triangles),
       patch_(mesh.vertices.size(), 0),
       feature_(mesh.vertices.size(), 0),

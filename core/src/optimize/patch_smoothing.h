@@ -40,7 +40,8 @@ inline constexpr double kMaxNormalTurnDeg = 20;
 /// The boundary triangles of a mesh and the exact surface they follow.
 class PatchSurface {
  public:
-  PatchSurface(const TetMesh& mesh, const DomainOracle& oracle, const ScalarField& facet_distance);
+  PatchSurface(const TetMesh& mesh, const DomainOracle& oracle, const ScalarField& facet_distance,
+               const ScalarField& edge_size);
 
   /// The patch (id) of vertex v when it lies on triangles of exactly one patch
   /// and on no feature edge or corner; 0 otherwise.
@@ -54,6 +55,8 @@ class PatchSurface {
   /// The oracle's description of curve `id` (copied once).
   const CurveInfo& curve_info(int id) const { return curves_[static_cast<std::size_t>(id) - 1]; }
   double facet_distance(const Point3& p) const { return facet_distance_(p); }
+  /// R2's bound on half a feature edge, at the edge's midpoint p.
+  double edge_size(const Point3& p) const { return edge_size_(p); }
   /// The point of `patch` closest to p (the oracle's projection).
   std::optional<Point3> project(const Point3& p, int patch) const;
   /// The unit normal of v's triangles with v at p (area-weighted mean); zero
@@ -71,6 +74,7 @@ class PatchSurface {
  private:
   const DomainOracle& oracle_;
   const ScalarField& facet_distance_;
+  const ScalarField& edge_size_;
   std::vector<std::array<int, 3>> triangles_;
   std::vector<Point3> normal0_;  ///< unit normal of each triangle in the input
   std::vector<int> triangle_patch_;
