@@ -58,12 +58,16 @@ class FeatureRef {
 /// R3 read it.
 struct VertexInfo {
   FeatureRef feature;
-  double t = 0.0;            ///< curve parameter when on a curve
-  int index = -1;            ///< scratch: output index during extraction
+  double t = 0.0;  ///< curve parameter when on a curve
+  int index = -1;  ///< scratch: output index during extraction
+  /// Scratch of exudation: the lanes (a bit each, exudation_lanes.h) whose part
+  /// of space holds the vertex; it fits in the padding after `index`.
+  std::uint8_t lane = 0;
   double ball_weight = 0.0;  ///< squared radius of its protecting ball (0: none)
 
   FeatureDim dim() const { return feature.dim(); }
 };
+static_assert(sizeof(VertexInfo) <= 32, "a vertex's info stays 32 bytes");
 
 /// CellInfo::facet_patch of a facet that is not in D|S (patch ids start at 1).
 inline constexpr PatchId kNotRestricted{0};

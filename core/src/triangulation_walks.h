@@ -25,12 +25,23 @@ class StarWalk {
  public:
   /// Replaces `out` by the cells incident to v (tr three-dimensional).
   void cells(Vertex_handle v, std::vector<Cell_handle>& out) {
+    cells_if(v, out, [](Cell_handle) { return true; });
+  }
+
+  /// As cells(), but marks a cell only once accept(cell) said yes: false,
+  /// with `out` incomplete, as soon as it says no. An exudation lane walks this
+  /// way, so that it never writes a cell it does not own (it reads the marks of
+  /// cells around its own vertices, which no other lane owns or marks).
+  template <class Accept>
+  bool cells_if(Vertex_handle v, std::vector<Cell_handle>& out, Accept accept) {
     out.clear();
     const Cell_handle d = v->cell();
+    if (!accept(d)) return false;
     stack_.clear();
     stack_.push_back(d);
     d->tds_data().mark_in_conflict();
     out.push_back(d);
+    bool accepted = true;
     do {
       const Cell_handle c = stack_.back();
       stack_.pop_back();
@@ -40,12 +51,17 @@ class StarWalk {
         if (c->vertex(i) == v) continue;
         const Cell_handle next = c->neighbor(i);
         if (!next->tds_data().is_clear()) continue;
+        if (!accept(next)) {
+          accepted = false;
+          break;
+        }
         stack_.push_back(next);
         next->tds_data().mark_in_conflict();
         out.push_back(next);
       }
-    } while (!stack_.empty());
+    } while (accepted && !stack_.empty());
     for (const Cell_handle& c : out) c->tds_data().clear();
+    return accepted;
   }
 
  private:

@@ -429,6 +429,7 @@ nlohmann::json report_json(const Options& opt, const Criteria& criteria, const D
                     {"histogram_after", exudation.histogram_after},
                     {"moves_tried", exudation.moves_tried},
                     {"moves_accepted", exudation.moves_accepted},
+                    {"moves_tried_in_lanes", exudation.moves_tried_in_lanes},
                     {"time_limit_reached", exudation.time_limit_reached},
                     {"seconds", exudation.seconds}};
   j["optimization"] = {{"ran", improvement.ran},

@@ -33,6 +33,9 @@ TEST(OptimizerThreads, ExudationAndImprovementIndependentOfThreadCount) {
   ASSERT_GT(one.mesh.tets.size(), 3 * 4096u);
   ASSERT_TRUE(one.exudation.ran);
   EXPECT_GT(one.exudation.moves_accepted, 0u);
+  // Both ways of pumping ran: inside the two lanes, and where they meet.
+  EXPECT_GT(one.exudation.moves_tried_in_lanes, 0u);
+  EXPECT_LT(one.exudation.moves_tried_in_lanes, one.exudation.moves_tried);
   ASSERT_TRUE(one.improvement.ran);
   EXPECT_GT(one.improvement.edge_removals + one.improvement.face_flips +
                 one.improvement.vertex_moves + one.improvement.boundary_moves,
@@ -48,6 +51,7 @@ TEST(OptimizerThreads, ExudationAndImprovementIndependentOfThreadCount) {
     EXPECT_EQ(one.mesh.triangles, other.mesh.triangles);
     EXPECT_EQ(one.exudation.moves_tried, other.exudation.moves_tried);
     EXPECT_EQ(one.exudation.moves_accepted, other.exudation.moves_accepted);
+    EXPECT_EQ(one.exudation.moves_tried_in_lanes, other.exudation.moves_tried_in_lanes);
     EXPECT_EQ(one.exudation.histogram_after, other.exudation.histogram_after);
     EXPECT_EQ(one.exudation.min_dihedral_after_deg, other.exudation.min_dihedral_after_deg);
     EXPECT_EQ(one.improvement.edge_removals, other.improvement.edge_removals);

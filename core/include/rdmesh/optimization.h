@@ -65,8 +65,12 @@ struct ExudationStats {
   double min_dihedral_after_deg = 0;
   DihedralHistogram histogram_before{};
   DihedralHistogram histogram_after{};
-  std::size_t moves_tried = 0;          ///< vertices whose weight was pumped
-  std::size_t moves_accepted = 0;       ///< weight changes applied to the triangulation
+  std::size_t moves_tried = 0;     ///< vertices whose weight was pumped
+  std::size_t moves_accepted = 0;  ///< weight changes applied to the triangulation
+  /// Of moves_tried, those tried inside one of two lanes (two halves of space,
+  /// pumped side by side on two threads); the others were tried where the
+  /// lanes meet, on one thread. The same for any thread count.
+  std::size_t moves_tried_in_lanes = 0;
   std::size_t perturb_moves_tried = 0;  ///< volume vertices the perturbation tried to move
   /// (moves_tried / moves_accepted count the pumps of both pumping rounds)
   std::size_t perturb_moves_accepted = 0;     ///< vertex moves kept

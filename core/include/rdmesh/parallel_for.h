@@ -29,26 +29,24 @@ constexpr std::size_t kParallelChunk = 4096;
 /// kParallelChunk)).
 inline std::size_t chunk_count(std::size_t n) { return (n + kParallelChunk - 1) / kParallelChunk; }
 
-/// Calls body(chunk, begin, end) once for every chunk of [0, n), on up to
-/// `threads` threads (the calling one among them; 0: all cores). An exception
-/// thrown by a body is rethrown here after every thread stopped (the one of
-/// the lowest chunk when several threw).
+/// Calls body(task) once for every task in [0, n), on up to `threads` threads
+/// (the calling one among them; 0: all cores), each task whole on one thread.
+/// An exception thrown by a body is rethrown here after every thread stopped
+/// (the one of the lowest task when several threw).
 template <class Body>
-void for_chunks(std::size_t n, int threads, Body body) {
-  const std::size_t chunks = chunk_count(n);
+void parallel_tasks(std::size_t n, int threads, Body body) {
   const auto workers = static_cast<std::size_t>(
-      std::min<std::size_t>(static_cast<std::size_t>(resolve_threads(threads)), chunks));
+      std::min<std::size_t>(static_cast<std::size_t>(resolve_threads(threads)), n));
   if (workers <= 1) {
-    for (std::size_t k = 0; k < chunks; ++k)
-      body(k, k * kParallelChunk, std::min(n, (k + 1) * kParallelChunk));
+    for (std::size_t k = 0; k < n; ++k) body(k);
     return;
   }
   std::atomic<std::size_t> next{0};
-  std::vector<std::exception_ptr> errors(chunks);
+  std::vector<std::exception_ptr> errors(n);
   auto work = [&] {
-    for (std::size_t k = next++; k < chunks; k = next++) {
+    for (std::size_t k = next++; k < n; k = next++) {
       try {
-        body(k, k * kParallelChunk, std::min(n, (k + 1) * kParallelChunk));
+        body(k);
       } catch (...) {
         errors[k] = std::current_exception();
       }
@@ -61,6 +59,15 @@ void for_chunks(std::size_t n, int threads, Body body) {
   for (std::thread& t : pool) t.join();
   for (const std::exception_ptr& e : errors)
     if (e) std::rethrow_exception(e);
+}
+
+/// Calls body(chunk, begin, end) once for every chunk of [0, n), on up to
+/// `threads` threads (parallel_tasks, a chunk per task).
+template <class Body>
+void for_chunks(std::size_t n, int threads, Body body) {
+  parallel_tasks(chunk_count(n), threads, [&](std::size_t k) {
+    body(k, k * kParallelChunk, std::min(n, (k + 1) * kParallelChunk));
+  });
 }
 
 /// Calls body(i) for every i in [0, n) (for_chunks, item by item).

@@ -3,14 +3,18 @@
 #include "sliver_exuder.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <queue>
 #include <string>
 #include <vector>
 
 #include "../triangulation_walks.h"
 #include "cell_shape.h"
+#include "cone_hole.h"
+#include "exudation_lanes.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/number_text.h"
 #include "rdmesh/parallel_for.h"
@@ -89,6 +93,42 @@ struct QueuedVertex {
   bool operator<(const QueuedVertex& o) const { return cosine < o.cosine; }
 };
 
+/// Rounds of lanes in each pumping pass (the first cut across the longest
+/// axis, the second across the next one), before the pass ends on the whole
+/// triangulation with what they left.
+constexpr int kLaneRounds = 2;
+/// Cells a lane's pool holds when its round starts (it keeps the cells its
+/// cones free: exudation removes more cells than it makes).
+constexpr std::size_t kPoolCells = 64;
+
+/// One worst-first loop's own state: a lane's (id >= 0), or that of a loop
+/// over the whole triangulation (id -1).
+struct Lane {
+  Lane(Triangulation& tr, int lane, std::uint32_t first_stamp, const CellLimits& limits,
+       const ChainEdges* chains)
+      : id(lane), pump(tr, first_stamp, limits, chains), pool(tr) {}
+  bool owns(Cell_handle c) const { return id < 0 || in_lane(c, id); }
+
+  int id;
+  WeightPump pump;
+  CellPool pool;
+  std::priority_queue<QueuedVertex> queue;
+  StarWalk walk;
+  std::vector<Cell_handle> star;  ///< scratch: the star of vertex star_of (-1: none)
+  int star_of = -1;
+  std::vector<QueuedVertex> deferred;  ///< entries left to the next round
+  std::size_t tried = 0, accepted = 0;
+  bool time_limit_reached = false;
+};
+
+/// What a step of the worst-first loop did: the cells it created when it
+/// changed the mesh (else nullptr), or that the vertex must wait for a later
+/// round (it reaches past its lane).
+struct Stepped {
+  const std::vector<Cell_handle>* created = nullptr;
+  bool deferred = false;
+};
+
 class Exuder {
  public:
   Exuder(Triangulation& tr, const Criteria& criteria, const ExudationOptions& options,
@@ -114,17 +154,24 @@ class Exuder {
       const double t = elapsed();
       VertexPerturber perturber(tr_, next_stamp);
       bound_cosine_ = std::cos(options_.perturb_bound_deg * M_PI / 180);
-      requeue(false);
-      process([&](Vertex_handle v, int,
-                  std::vector<Cell_handle>& star) { return worst_cosine(v, star); },
-              [&](Vertex_handle v, int) -> const std::vector<Cell_handle>* {
-                if (v->info().dim() != FeatureDim::kVolume) return nullptr;
-                ++stats.perturb_moves_tried;
-                if (!perturber.perturb(v, nearest_distance(v))) return nullptr;
-                ++stats.perturb_moves_accepted;
-                return &perturber.new_cells();
-              },
-              stats.time_limit_reached);
+      Lane whole(tr_, -1, next_stamp, limits_, chains_);
+      for (const QueuedVertex& e : requeue(false)) whole.queue.push(e);
+      process(
+          whole,
+          [&](Lane& lane, Vertex_handle v, int, double& worst) {
+            worst = worst_cosine(lane, v);
+            return true;
+          },
+          [&](Lane&, Vertex_handle v, int) {
+            Stepped s;
+            if (v->info().dim() != FeatureDim::kVolume) return s;
+            ++stats.perturb_moves_tried;
+            if (!perturber.perturb(v, nearest_distance(v))) return s;
+            ++stats.perturb_moves_accepted;
+            s.created = &perturber.new_cells();
+            return s;
+          });
+      stats.time_limit_reached = whole.time_limit_reached;
       DihedralHistogram histogram;
       domain_cosines(tr_, threads_, /*store=*/false, cells_, cosines_);
       measure(cosines_, stats.min_dihedral_after_perturb_deg, histogram);
@@ -146,86 +193,154 @@ class Exuder {
   /// Weight pumping in passes of rising sliver bound (the worst slivers first
   /// across the whole mesh, then the milder ones); returns the next free stamp.
   /// `cosines_fresh`: cells_ and cosines_ are those of the current triangulation.
+  /// Each pass runs kLaneRounds rounds of kExudationLanes lanes (side by side
+  /// on up to threads_ threads), each round on what the one before left, then
+  /// a loop over the whole triangulation on the rest: the same work in the
+  /// same order for any number of threads.
   std::uint32_t pump_passes(ExudationStats& stats, std::uint32_t next_stamp, bool cosines_fresh) {
-    WeightPump pump(tr_, next_stamp, limits_, chains_);
     // Stars may have changed since the last pumping (perturbation): forget every worst cosine.
     star_version_.assign(moves_.size(), 1);
     worst_version_.assign(moves_.size(), 0);
     worst_.assign(moves_.size(), 0);
+    std::vector<std::unique_ptr<Lane>> lanes;
+    for (int l = 0; l < kExudationLanes; ++l)
+      lanes.push_back(std::make_unique<Lane>(tr_, l, next_stamp, limits_, chains_));
+    Lane whole(tr_, -1, next_stamp, limits_, chains_);
+    const std::array<int, 3> axes = axes_by_extent(tr_);
     const int passes = std::max(1, options_.passes);
     for (int pass = 1; pass <= passes && !stats.time_limit_reached; ++pass) {
       bound_cosine_ = std::cos(options_.sliver_bound_deg * pass / passes * M_PI / 180);
-      requeue(cosines_fresh && pass == 1);
-      process(
-          [&](Vertex_handle v, int id, std::vector<Cell_handle>& star) {
-            // Kept while the star of v stays as it is (process() counts its changes).
-            star_of_ = -1;
-            if (worst_version_[id] != star_version_[id]) {
-              worst_[id] = worst_cosine(v, star);
-              worst_version_[id] = star_version_[id];
-              star_of_ = id;  // step() may hand `star` to the pump
-            }
-            return worst_[id];
-          },
-          [&](Vertex_handle v, int id) -> const std::vector<Cell_handle>* {
-            ++stats.moves_tried;
-            const double max_weight =
-                v->info().ball_weight + options_.max_weight_ratio * nearest_sq_[id];
-            const std::vector<Cell_handle>* star = star_of_ == id ? &star_ : nullptr;
-            if (pump.pump(v, max_weight, star, worst_[id]) != WeightPump::Outcome::kAccepted)
-              return nullptr;
-            ++stats.moves_accepted;
-            return &pump.new_cells();
-          },
-          stats.time_limit_reached);
+      std::vector<QueuedVertex> work = requeue(cosines_fresh && pass == 1);
+      for (int round = 0; round < kLaneRounds && !work.empty() && !stats.time_limit_reached;
+           ++round) {
+        std::vector<Vertex_handle> vertices;
+        vertices.reserve(work.size());
+        for (const QueuedVertex& e : work) vertices.push_back(e.vertex);
+        assign_lanes(tr_, vertices, axes[static_cast<std::size_t>(round)]);
+        for (int l = 0; l < kExudationLanes; ++l) {
+          Lane& lane = *lanes[static_cast<std::size_t>(l)];
+          lane.pool.fill(kPoolCells);
+          lane.pump.set_lane(l, &lane.pool, next_stamp + static_cast<std::uint32_t>(l),
+                             kExudationLanes);
+        }
+        for (const QueuedVertex& e : work)
+          lanes[e.vertex->info().lane == lane_bit(0) ? 0 : 1]->queue.push(e);
+        parallel_tasks(lanes.size(), threads_, [&](std::size_t l) { pump(*lanes[l]); });
+        work.clear();
+        for (const std::unique_ptr<Lane>& lane : lanes) {
+          stats.moves_tried_in_lanes += lane->tried;
+          merge(*lane, stats);
+          work.insert(work.end(), lane->deferred.begin(), lane->deferred.end());
+          lane->deferred.clear();
+          lane->queue = {};
+          lane->pool.release();
+          next_stamp = std::max(next_stamp, lane->pump.next_stamp());
+        }
+      }
+      if (stats.time_limit_reached) break;
+      whole.pump.set_lane(-1, nullptr, next_stamp, 1);
+      for (const QueuedVertex& e : work) whole.queue.push(e);
+      pump(whole);
+      merge(whole, stats);
+      next_stamp = whole.pump.next_stamp();
     }
-    return pump.next_stamp();
+    return next_stamp;
+  }
+
+  /// Weight pumping of the vertices queued in `lane`, worst first.
+  void pump(Lane& lane) {
+    process(
+        lane,
+        [&](Lane& l, Vertex_handle v, int id, double& worst) {
+          // Kept while the star of v stays as it is (process() counts its changes).
+          l.star_of = -1;
+          if (worst_version_[id] != star_version_[id]) {
+            if (!l.walk.cells_if(v, l.star, [&](Cell_handle c) { return l.owns(c); })) return false;
+            double w = -std::numeric_limits<double>::infinity();
+            for (const Cell_handle& c : l.star) w = std::max(w, c->info().shape_cosine);
+            worst_[id] = w;
+            worst_version_[id] = star_version_[id];
+            l.star_of = id;  // the step may hand the star to the pump
+          }
+          worst = worst_[id];
+          return true;
+        },
+        [&](Lane& l, Vertex_handle v, int id) {
+          Stepped s;
+          const double max_weight =
+              v->info().ball_weight + options_.max_weight_ratio * nearest_sq_[id];
+          const std::vector<Cell_handle>* star = l.star_of == id ? &l.star : nullptr;
+          const WeightPump::Outcome outcome = l.pump.pump(v, max_weight, star, worst_[id]);
+          s.deferred = outcome == WeightPump::Outcome::kDeferred;
+          if (s.deferred) return s;
+          ++l.tried;
+          if (outcome != WeightPump::Outcome::kAccepted) return s;
+          ++l.accepted;
+          s.created = &l.pump.new_cells();
+          return s;
+        });
+  }
+
+  static void merge(Lane& lane, ExudationStats& stats) {
+    stats.moves_tried += lane.tried;
+    stats.moves_accepted += lane.accepted;
+    stats.time_limit_reached = stats.time_limit_reached || lane.time_limit_reached;
+    lane.tried = lane.accepted = 0;
   }
 
   double elapsed() const { return clock_.seconds(); }
 
-  /// The worst-first loop: `step(v, id)` tries vertex v and returns the cells
-  /// it created when it changed the mesh (nullptr otherwise). A vertex is
-  /// tried again only after its star changed. `worst_of(v, id, scratch)`: the
-  /// worst cosine of the domain cells around v (worst_cosine()).
+  /// The worst-first loop over lane.queue: `worst_of(lane, v, id, worst)` sets
+  /// the worst cosine of the domain cells around v, or returns false when
+  /// v's star leaves the lane; `step(lane, v, id)` tries vertex v (a Stepped).
+  /// A vertex is tried again only after its star changed. Vertices left for a
+  /// later round go to lane.deferred.
   template <class Worst, class Step>
-  void process(Worst worst_of, Step step, bool& time_limit_reached) {
-    std::vector<Cell_handle>& star = star_;
-    while (!queue_.empty()) {
+  void process(Lane& lane, Worst worst_of, Step step) {
+    while (!lane.queue.empty()) {
       if (options_.time_limit_seconds > 0 && elapsed() > options_.time_limit_seconds) {
-        time_limit_reached = true;
+        lane.time_limit_reached = true;
         return;
       }
-      const QueuedVertex top = queue_.top();
-      queue_.pop();
+      const QueuedVertex top = lane.queue.top();
+      lane.queue.pop();
       const Vertex_handle v = top.vertex;
       const int id = v->info().index;
       if (!dirty_[id] || moves_[id] >= options_.max_moves_per_vertex) continue;
       // The entry may be outdated: re-rank the vertex by its current star.
-      const double worst = worst_of(v, id, star);
+      double worst = 0;
+      if (!worst_of(lane, v, id, worst)) {
+        lane.deferred.push_back(top);
+        continue;
+      }
       if (!(worst > bound_cosine_)) continue;
       if (worst < top.cosine) {
-        queue_.push({worst, v});
+        lane.queue.push({worst, v});
         continue;
       }
       dirty_[id] = 0;  // tried on this star: wait until the star changes
-      const std::vector<Cell_handle>* created = step(v, id);
-      if (created == nullptr) continue;
+      const Stepped stepped = step(lane, v, id);
+      if (stepped.deferred) {
+        dirty_[id] = 1;
+        lane.deferred.push_back(top);
+        continue;
+      }
+      if (stepped.created == nullptr) continue;
       ++moves_[id];
       // Vertices of the new cells: their stars changed (every vertex of a
-      // destroyed cell is one of them, none is hidden).
-      for (const Cell_handle& c : *created) {
+      // destroyed cell is one of them, none is hidden). In a lane, all are its own.
+      for (const Cell_handle& c : *stepped.created) {
         for (int k = 0; k < 4; ++k) {
           const Vertex_handle u = c->vertex(k);
           if (!tr_.is_infinite(u) && !star_version_.empty()) ++star_version_[u->info().index];
         }
       }
-      for (const Cell_handle& c : *created) {
+      for (const Cell_handle& c : *stepped.created) {
         const double cosine = c->info().shape_cosine;  // -infinity outside the domain
         if (!(cosine > bound_cosine_)) continue;
         for (int k = 0; k < 4; ++k) {
           dirty_[c->vertex(k)->info().index] = 1;
-          queue_.push({cosine, c->vertex(k)});
+          lane.queue.push({cosine, c->vertex(k)});
         }
       }
     }
@@ -270,12 +385,12 @@ class Exuder {
     return max_stamp + 1;
   }
 
-  /// Queues every vertex incident to a domain cell below the current bound
-  /// (`cosines_fresh`: cells_ and cosines_ are up to date).
-  void requeue(bool cosines_fresh) {
+  /// The vertices incident to a domain cell below the current bound, each
+  /// with its worst cosine, in vertex order; resets dirty_ (`cosines_fresh`:
+  /// cells_ and cosines_ are up to date).
+  std::vector<QueuedVertex> requeue(bool cosines_fresh) {
     if (!cosines_fresh) domain_cosines(tr_, threads_, /*store=*/false, cells_, cosines_);
     const std::size_t n = moves_.size();
-    queue_ = {};
     dirty_.assign(n, 1);
     std::vector<double> worst(n, -std::numeric_limits<double>::infinity());
     for (std::size_t i = 0; i < cells_.size(); ++i) {
@@ -286,17 +401,19 @@ class Exuder {
         w = std::max(w, cosine);
       }
     }
+    std::vector<QueuedVertex> queued;
     for (auto v = tr_.finite_vertices_begin(); v != tr_.finite_vertices_end(); ++v) {
       const double w = worst[v->info().index];
-      if (w > bound_cosine_) queue_.push({w, v});
+      if (w > bound_cosine_) queued.push_back({w, v});
     }
+    return queued;
   }
 
   /// Worst cosine over the domain cells incident to v (their shape_cosine).
-  double worst_cosine(Vertex_handle v, std::vector<Cell_handle>& star) {
-    walk_.cells(v, star);
+  static double worst_cosine(Lane& lane, Vertex_handle v) {
+    lane.walk.cells(v, lane.star);
     double worst = -std::numeric_limits<double>::infinity();
-    for (const Cell_handle& c : star) worst = std::max(worst, c->info().shape_cosine);
+    for (const Cell_handle& c : lane.star) worst = std::max(worst, c->info().shape_cosine);
     return worst;
   }
 
@@ -307,16 +424,13 @@ class Exuder {
   CellLimits limits_;
   double bound_cosine_;
   std::vector<double> nearest_sq_;
+  /// By vertex index, each written only by the lane that owns the vertex.
   std::vector<int> moves_;   ///< accepted moves per vertex
   std::vector<char> dirty_;  ///< star changed since the vertex was last tried
   /// By vertex: changes of its star counted by process(); worst_ is its worst
   /// cosine as it was at change worst_version_ (pump passes).
   std::vector<std::uint32_t> star_version_, worst_version_;
   std::vector<double> worst_;
-  StarWalk walk_;
-  std::vector<Cell_handle> star_;  ///< process()'s scratch: the star of vertex star_of_ (-1: none)
-  int star_of_ = -1;
-  std::priority_queue<QueuedVertex> queue_;
   std::vector<Cell_handle> cells_;  ///< finite cells, scratch of domain_cosines
   std::vector<double> cosines_;
   Stopwatch clock_;

@@ -123,7 +123,7 @@ bool VertexPerturber::plan_move(Vertex_handle v, const Point3& p, int label, dou
   new_worst = -std::numeric_limits<double>::infinity();
   for (const BoundaryFacet& f : boundary_) {
     const auto q = new_cell(f.inner, f.index, wp);
-    // As cell_cosine() will see the new cell (CGAL keeps the inner cell's vertex order).
+    // As cell_cosine() will see the new cell (cone_hole keeps the inner cell's vertex order).
     new_worst = std::max(new_worst, max_dihedral_cosine(to_point3(*q[0]), to_point3(*q[1]),
                                                         to_point3(*q[2]), to_point3(*q[3])));
   }
@@ -182,19 +182,17 @@ bool VertexPerturber::cone_is_regular(Vertex_handle v, const Weighted_point& wp)
 }
 
 void VertexPerturber::move(Vertex_handle v, const Point3& p, int label) {
-  const BoundaryFacet& start = boundary_.front();
-  cone_hole(tr_, region_, start.inner, start.index, v);
+  hole_facets_.clear();
+  for (const BoundaryFacet& f : boundary_) hole_facets_.push_back({f.inner, f.index});
+  // The new cells, in the order of the boundary facets.
+  cone_.build(tr_, region_, hole_facets_, v, nullptr, new_cells_);
   v->set_point(weighted(p, v->point().weight()));
-  // The new cells, in the order of the boundary facets (the structure's order).
-  new_cells_.clear();
-  for (const BoundaryFacet& f : boundary_) {
-    const Cell_handle c = f.outer->neighbor(f.outer_index);
+  for (const Cell_handle& c : new_cells_) {
     CellInfo& info = c->info();
     info.stamp = next_stamp_++;
     info.label = label;
     info.facet_patch.fill(kNotRestricted);
     info.shape_cosine = stored_shape(tr_, c);
-    new_cells_.push_back(c);
   }
 }
 

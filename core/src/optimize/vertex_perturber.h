@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "../triangulation_types.h"
+#include "cone_hole.h"
 #include "edge_table.h"
 
 namespace rdmesh::detail {
@@ -77,6 +78,8 @@ class VertexPerturber {
   std::vector<BoundaryFacet> boundary_;
   EdgeTable edges_;  ///< the edges of boundary_, with their facets
   std::vector<Vertex_handle> boundary_vertices_;
+  std::vector<HoleFacet> hole_facets_;
+  ConeBuilder cone_;
   std::vector<Cell_handle> new_cells_;
 };
 

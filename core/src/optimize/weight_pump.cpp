@@ -51,7 +51,7 @@ WeightPump::WeightPump(Triangulation& tr, std::uint32_t first_stamp, CellLimits 
   boundary_.reserve(256);
 }
 
-void WeightPump::collect_star(Vertex_handle v, const std::vector<Cell_handle>* star,
+bool WeightPump::collect_star(Vertex_handle v, const std::vector<Cell_handle>* star,
                               double star_cosine) {
   zone_.clear();
   star_facets_.clear();
@@ -59,7 +59,10 @@ void WeightPump::collect_star(Vertex_handle v, const std::vector<Cell_handle>* s
     zone_.assign(star->begin(), star->end());
     zone_quality_ = star_cosine;
   } else {
-    walk_.cells(v, zone_);
+    if (!walk_.cells_if(v, zone_, [&](Cell_handle c) { return in_lane(c); })) {
+      zone_.clear();
+      return false;
+    }
     zone_quality_ = -std::numeric_limits<double>::infinity();
     for (const Cell_handle& c : zone_)
       zone_quality_ = std::max(zone_quality_, c->info().shape_cosine);
@@ -88,10 +91,18 @@ void WeightPump::collect_star(Vertex_handle v, const std::vector<Cell_handle>* s
       star_facets_.push_back(f);
     }
   }
+  return true;
 }
 
 void WeightPump::push_frontier(Cell_handle c, Vertex_handle v) {
-  if (tr_.is_infinite(c) || c->tds_data().is_in_conflict()) return;
+  // A cell next to Z shares three vertices with a cell of the lane: the other
+  // lane never owns it, so nobody writes its mark while this pump reads it.
+  if (c->tds_data().is_in_conflict()) return;
+  if (!in_lane(c)) {
+    left_lane_ = true;
+    return;
+  }
+  if (tr_.is_infinite(c)) return;
   frontier_.push({critical_weight(c, to_point3(v->point())), c});
 }
 
@@ -237,7 +248,8 @@ WeightPump::Check WeightPump::validate(Vertex_handle v) {
 
 WeightPump::Outcome WeightPump::pump(Vertex_handle v, double max_weight,
                                      const std::vector<Cell_handle>* star, double star_cosine) {
-  collect_star(v, star, star_cosine);
+  if (!collect_star(v, star, star_cosine)) return Outcome::kDeferred;
+  left_lane_ = false;
   frontier_.clear();
   rejecting_ = {};
   facet_cosine_.clear();
@@ -250,6 +262,10 @@ WeightPump::Outcome WeightPump::pump(Vertex_handle v, double max_weight,
   }
   for (std::size_t z = 0; z < star_size_; ++z)
     push_frontier(zone_[z]->neighbor(zone_[z]->index(v)), v);
+  if (left_lane_) {
+    clear_marks();
+    return Outcome::kDeferred;
+  }
 
   double best_weight = -1, best_quality = 0;
   std::size_t best_size = 0;
@@ -269,6 +285,10 @@ WeightPump::Outcome WeightPump::pump(Vertex_handle v, double max_weight,
       }
       for (int i = 0; i < 4; ++i) __builtin_prefetch(&*c->neighbor(i));
       for (int i = 0; i < 4; ++i) push_frontier(c->neighbor(i), v);
+      if (left_lane_) {
+        clear_marks();
+        return Outcome::kDeferred;
+      }
     }
     if (stop) break;
     const double next = frontier_.empty() ? max_weight : std::min(frontier_.top().crit, max_weight);
@@ -293,40 +313,42 @@ WeightPump::Outcome WeightPump::pump(Vertex_handle v, double max_weight,
   clear_marks();
   if (best_weight < 0) return Outcome::kNoImprovement;
   zone_.resize(best_size);
-  return commit(v, best_weight) ? Outcome::kAccepted : Outcome::kInexact;
+  return commit(v, best_weight);
 }
 
-bool WeightPump::commit(Vertex_handle v, double weight) {
+WeightPump::Outcome WeightPump::commit(Vertex_handle v, double weight) {
   const Weighted_point wp(v->point().point(), weight);
-  // The exact conflict zone of (v, weight) must be Z.
-  exact_cells_.clear();
-  exact_facets_.clear();
-  tr_.find_conflicts(wp, v->cell(), std::back_inserter(exact_facets_),
-                     std::back_inserter(exact_cells_));
-  if (exact_cells_.size() != zone_.size()) return false;
-  for (const Cell_handle& c : zone_) c->tds_data().mark_in_conflict();
-  bool same = true;
-  for (const Cell_handle& c : exact_cells_) same = same && c->tds_data().is_in_conflict();
-  if (!same) {
-    clear_marks();
-    return false;
-  }
   // Z is the zone pump() validated (the same cells in the same order, the
   // triangulation unchanged since): its new star is valid, only its boundary
   // must be listed again.
+  for (const Cell_handle& c : zone_) c->tds_data().mark_in_conflict();
   boundary_quality(v, 0, /*measure=*/false);
-  // Remember, for each new cell, the outer cell across its boundary facet.
-  struct Outer {
-    Cell_handle cell;
-    int index;
+  // The exact conflict zone of (v, weight), found from v's cell, must be Z:
+  // every cell of Z in conflict, none of the cells next to it.
+  bool exact = true;
+  for (std::size_t z = 0; exact && z < zone_.size(); ++z)
+    exact = tr_.side_of_power_sphere(zone_[z], wp, true) == CGAL::ON_BOUNDED_SIDE;
+  for (std::size_t b = 0; exact && b < boundary_.size(); ++b)
+    exact = tr_.side_of_power_sphere(boundary_[b].inner->neighbor(boundary_[b].index), wp, true) !=
+            CGAL::ON_BOUNDED_SIDE;
+  const std::size_t more = boundary_.size() > zone_.size() ? boundary_.size() - zone_.size() : 0;
+  if (!exact || (pool_ != nullptr && pool_->size() < more)) {
+    clear_marks();
+    return exact ? Outcome::kDeferred : Outcome::kInexact;
+  }
+  // What each new cell keeps of the boundary facet it stands on (read now: the
+  // cone overwrites the cells of Z).
+  struct Kept {
     int label;
     double cosine;  ///< the new cell's shape_cosine
+    PatchId patch;  ///< of the boundary facet (both its sides hold the same data)
+    Point3 center;
   };
-  std::vector<Outer> outer;
-  outer.reserve(boundary_.size());
+  std::vector<Kept> kept;
+  kept.reserve(boundary_.size());
+  hole_facets_.clear();
   const Point3 pv = to_point3(v->point());
   for (const BoundaryFacet& f : boundary_) {
-    const Cell_handle n = f.inner->neighbor(f.index);
     double cosine = -std::numeric_limits<double>::infinity();
     if (!f.infinite && f.label != 0) {
       // Measured when pump() rated this zone (it rated it in full), else now.
@@ -337,24 +359,26 @@ bool WeightPump::commit(Vertex_handle v, double weight) {
                                      to_point3(f.inner->vertex((f.index + 2) & 3)->point()),
                                      to_point3(f.inner->vertex((f.index + 3) & 3)->point()));
     }
-    outer.push_back({n, n->index(f.inner), f.label, cosine});
+    const PatchId patch = f.inner->info().facet_patch[f.index];
+    kept.push_back({f.label, cosine, patch,
+                    patch != kNotRestricted ? f.inner->info().surface_center[f.index] : Point3{}});
+    hole_facets_.push_back({f.inner, f.index});
   }
-  const BoundaryFacet& start = boundary_.front();
   // Re-triangulate the hole as the cone from v (the same vertex object).
-  cone_hole(tr_, zone_, start.inner, start.index, v);
+  cone_.build(tr_, zone_, hole_facets_, v, pool_, new_cells_);
   v->set_point(wp);
 
-  new_cells_.clear();
-  for (const Outer& o : outer) {
-    const Cell_handle c = o.cell->neighbor(o.index);
+  for (std::size_t n = 0; n < new_cells_.size(); ++n) {
+    const Cell_handle c = new_cells_[n];
+    const Kept& o = kept[n];
     CellInfo& info = c->info();
-    info.stamp = next_stamp_++;
+    info.stamp = next_stamp_;
+    next_stamp_ += stamp_stride_;
     info.label = o.label;
     info.facet_patch.fill(kNotRestricted);
-    const int k = c->index(v);
-    info.facet_patch[k] = o.cell->info().facet_patch[o.index];
-    if (info.facet_patch[k] != kNotRestricted)
-      info.surface_center.set(k, o.cell->info().surface_center[o.index]);
+    const int k = hole_facets_[n].index;  // v's index in c
+    info.facet_patch[k] = o.patch;
+    if (o.patch != kNotRestricted) info.surface_center.set(k, o.center);
     for (int i = 0; i < 4; ++i) {
       if (i == k) continue;
       Vertex_handle a, b;
@@ -372,9 +396,8 @@ bool WeightPump::commit(Vertex_handle v, double weight) {
     }
     if (tr_.is_infinite(c)) info.label = 0;
     info.shape_cosine = o.cosine;
-    new_cells_.push_back(c);
   }
-  return true;
+  return Outcome::kAccepted;
 }
 
 }  // namespace rdmesh::detail

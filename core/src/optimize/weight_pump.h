@@ -29,9 +29,17 @@
 // Among valid candidates the one whose new domain cells (label != 0) have the
 // largest smallest dihedral angle wins, if it is strictly larger than the
 // smallest dihedral angle of the domain cells of Z it replaces. The chosen
-// weight is checked once more with CGAL's exact conflict test
-// (find_conflicts must return exactly Z) before the zone is re-triangulated
-// in place (the vertex object is kept).
+// weight is checked once more with the exact, perturbed power test (every
+// cell of Z in conflict with the new weighted point, no cell next to Z: then
+// Z is exactly what CGAL's find_conflicts would return) before the zone is
+// re-triangulated in place (the vertex object is kept, see cone_hole.h).
+//
+// In a lane (set_lane()), a pump reads and writes only the cells its lane
+// owns: those whose finite vertices all carry the lane's number
+// (VertexInfo::lane; the infinite vertex carries every lane or none, as the
+// exuder decides). A star, zone or zone neighbour outside the lane, or a
+// cone needing more cells than the hole and the lane's pool hold, leaves the
+// vertex as it is (kDeferred) for a pass that sees the whole triangulation.
 #pragma once
 
 #include <array>
@@ -42,7 +50,9 @@
 #include "../triangulation_types.h"
 #include "../triangulation_walks.h"
 #include "chain_edges.h"
+#include "cone_hole.h"
 #include "edge_table.h"
+#include "exudation_lanes.h"
 #include "rdmesh/criteria.h"
 
 namespace rdmesh::detail {
@@ -60,6 +70,7 @@ class WeightPump {
     kAccepted,       ///< the weight changed; new_cells() is the new star
     kNoImprovement,  ///< no valid weight below the bound improves the star
     kInexact,        ///< the best weight's exact conflict zone differed from the estimate
+    kDeferred,       ///< it needs cells outside the pump's lane (or more pooled cells)
   };
 
   /// `first_stamp`: the stamp given to the first cell this pump creates.
@@ -67,6 +78,19 @@ class WeightPump {
   /// feature vertices (dim <= 1).
   WeightPump(Triangulation& tr, std::uint32_t first_stamp, CellLimits limits = {},
              const ChainEdges* chains = nullptr);
+
+  /// From now on, work inside lane `lane` only, taking cells from `pool`; -1
+  /// (the default): everywhere, with the triangulation's container.
+  /// Its new cells' stamps then are first_stamp, first_stamp + stamp_stride, ...
+  /// (one sequence per lane).
+  void set_lane(int lane, CellPool* pool, std::uint32_t first_stamp, std::uint32_t stamp_stride) {
+    lane_ = lane;
+    pool_ = pool;
+    next_stamp_ = first_stamp;
+    stamp_stride_ = stamp_stride;
+  }
+  /// Whether cell c lies in the pump's lane (always, without one).
+  bool in_lane(Cell_handle c) const { return lane_ < 0 || detail::in_lane(c, lane_); }
 
   /// Tries weights of `v` in (current weight, max_weight]; applies the best one.
   /// `star`, when given: the cells around v as Triangulation::incident_cells
@@ -103,7 +127,8 @@ class WeightPump {
   };
   enum class Check { kValid, kInvalid, kInvalidFromNowOn };
 
-  void collect_star(Vertex_handle v, const std::vector<Cell_handle>* star, double star_cosine);
+  /// False when the star leaves the lane.
+  bool collect_star(Vertex_handle v, const std::vector<Cell_handle>* star, double star_cosine);
   void push_frontier(Cell_handle c, Vertex_handle v);
   /// Adds c to Z; false (Z unchanged) when c may never join it.
   bool absorb(Cell_handle c);
@@ -115,13 +140,14 @@ class WeightPump {
   /// Validity of the current Z, whose boundary boundary_quality() listed in full.
   Check validate(Vertex_handle v);
   void clear_marks();
-  bool commit(Vertex_handle v, double weight);
+  Outcome commit(Vertex_handle v, double weight);
 
   /// The new cell v + (a, b, c) keeps the cell rules of limits_.
   bool within_limits(const Point3& v, const Point3& a, const Point3& b, const Point3& c) const;
 
   Triangulation& tr_;
   std::uint32_t next_stamp_;
+  std::uint32_t stamp_stride_ = 1;
   CellLimits limits_;
   const ChainEdges* chains_;
   std::vector<Cell_handle> zone_;  ///< Z: the star of v first, then absorbed cells
@@ -150,8 +176,11 @@ class WeightPump {
     int index = -1;
     double cosine = 0;
   } rejecting_;
-  std::vector<Cell_handle> exact_cells_;
-  std::vector<Triangulation::Facet> exact_facets_;
+  int lane_ = -1;
+  CellPool* pool_ = nullptr;
+  bool left_lane_ = false;  ///< push_frontier() met a cell outside the lane
+  ConeBuilder cone_;
+  std::vector<HoleFacet> hole_facets_;
   std::vector<Cell_handle> new_cells_;
   StarWalk walk_;
 };

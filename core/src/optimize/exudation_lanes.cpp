@@ -1,0 +1,62 @@
+#include "exudation_lanes.h"
+
+#include <algorithm>
+#include <iterator>
+#include <limits>
+
+namespace rdmesh::detail {
+namespace {
+
+double coordinate(Vertex_handle v, int axis) {
+  const Weighted_point& p = v->point();
+  return axis == 0 ? p.x() : axis == 1 ? p.y() : p.z();
+}
+
+}  // namespace
+
+void assign_lanes(Triangulation& tr, const std::vector<Vertex_handle>& work, int axis) {
+  std::vector<double> values;
+  values.reserve(work.size());
+  for (const Vertex_handle& v : work) values.push_back(coordinate(v, axis));
+  double split = 0;
+  if (!values.empty()) {
+    const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+    std::nth_element(values.begin(), middle, values.end());
+    split = *middle;
+  }
+  for (auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
+    v->info().lane = lane_bit(coordinate(v, axis) < split ? 0 : 1);
+  const Vertex_handle infinite = tr.infinite_vertex();
+  infinite->info().lane = kNoLane;
+  std::vector<Cell_handle> hull;
+  tr.incident_cells(infinite, std::back_inserter(hull));
+  for (const Cell_handle& c : hull) {
+    bool lane[2] = {false, false};
+    for (int k = 0; k < 4; ++k)
+      if (c->vertex(k) != infinite) lane[c->vertex(k)->info().lane == lane_bit(1)] = true;
+    if (lane[0] && lane[1]) {
+      infinite->set_cell(c);
+      infinite->info().lane = kAnyLane;
+      return;
+    }
+  }
+}
+
+std::array<int, 3> axes_by_extent(const Triangulation& tr) {
+  double lo[3], hi[3];
+  std::fill(lo, lo + 3, std::numeric_limits<double>::infinity());
+  std::fill(hi, hi + 3, -std::numeric_limits<double>::infinity());
+  for (auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v) {
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = std::min(lo[a], coordinate(v, a));
+      hi[a] = std::max(hi[a], coordinate(v, a));
+    }
+  }
+  std::array<int, 3> axes = {0, 1, 2};
+  // Stable: equal extents keep x, y, z order.
+  std::stable_sort(axes.begin(), axes.end(),
+                   [&](int a, int b) { return hi[a] - lo[a] > hi[b] - lo[b]; });
+  return axes;
+}
+
+}  // namespace rdmesh::detail
