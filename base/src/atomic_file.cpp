@@ -9,6 +9,7 @@
 #include <fstream>
 #include <random>
 #include <system_error>
+#include <utility>
 #include <vector>
 
 #include "rdmesh/errors.h"
@@ -77,18 +78,53 @@ void write_temp(const std::string& temp, const std::string& path,
 
 void write_file_atomically(const std::string& path,
                            const std::function<void(std::ostream&)>& writer) {
+  StagedFile(path, writer).commit();
+}
+
+StagedFile::StagedFile(const std::string& path, const std::function<void(std::ostream&)>& writer)
+    : path_(path) {
   std::error_code ec;
   if (fs::is_directory(path, ec)) throw OutputError(path + ": is a directory");
-  const std::string temp = create_temp_file(path);
+  temp_ = create_temp_file(path);
   try {
-    write_temp(temp, path, writer);
-    sync_file(temp, path);
-    fs::rename(temp, path, ec);
-    if (ec) throw OutputError(path + ": cannot replace the file (" + ec.message() + ")");
+    write_temp(temp_, path, writer);
+    sync_file(temp_, path);
   } catch (...) {
-    fs::remove(temp, ec);
+    discard();
     throw;
   }
+}
+
+StagedFile::StagedFile(StagedFile&& other) noexcept
+    : path_(std::move(other.path_)), temp_(std::exchange(other.temp_, std::string())) {}
+
+StagedFile& StagedFile::operator=(StagedFile&& other) noexcept {
+  if (this != &other) {
+    discard();
+    path_ = std::move(other.path_);
+    temp_ = std::exchange(other.temp_, std::string());
+  }
+  return *this;
+}
+
+StagedFile::~StagedFile() { discard(); }
+
+void StagedFile::commit() {
+  if (temp_.empty()) throw InternalError(path_ + ": StagedFile committed twice or after a move");
+  std::error_code ec;
+  fs::rename(temp_, path_, ec);
+  if (ec) {
+    discard();
+    throw OutputError(path_ + ": cannot replace the file (" + ec.message() + ")");
+  }
+  temp_.clear();
+}
+
+void StagedFile::discard() noexcept {
+  if (temp_.empty()) return;
+  std::error_code ec;
+  fs::remove(temp_, ec);
+  temp_.clear();
 }
 
 }  // namespace rdmesh

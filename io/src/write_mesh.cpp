@@ -45,6 +45,10 @@ bool writes_binary(const TetMesh& mesh, MeshFormat format, const WriteOptions& o
 }
 
 void write_mesh(const TetMesh& mesh, const std::string& path, const WriteOptions& options) {
+  stage_mesh(mesh, path, options).commit();
+}
+
+StagedFile stage_mesh(const TetMesh& mesh, const std::string& path, const WriteOptions& options) {
   const MeshFormat format = format_from_path(path);
   bool binary = false;
   try {
@@ -52,7 +56,7 @@ void write_mesh(const TetMesh& mesh, const std::string& path, const WriteOptions
   } catch (const InputError& e) {
     throw InputError(path, e.what());
   }
-  write_file_atomically(path, [&](std::ostream& out) {
+  return StagedFile(path, [&](std::ostream& out) {
     switch (format) {
       case MeshFormat::Medit:
         return write_medit(mesh, out);

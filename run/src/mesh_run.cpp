@@ -1,12 +1,32 @@
 #include "rdmesh/mesh_run.h"
 
+#include <future>
+
 #include "model_measures.h"
 #include "rdmesh/atomic_file.h"
 #include "rdmesh/mesh_writers.h"
 #include "rdmesh/number_text.h"
+#include "rdmesh/parallel_for.h"
 #include "rdmesh/stopwatch.h"
 
 namespace rdmesh::run {
+
+namespace {
+/// Whether the mesh file can be written while the mesh is checked: a thread
+/// to spare, and the mesh written is the mesh generated (no second order, no
+/// partitions added after the check).
+bool stage_while_checking(const Options& opt) {
+  return !opt.output.empty() && resolve_threads(opt.threads) > 1 && opt.fem.order != 2 &&
+         opt.fem.partitions == 0;
+}
+
+/// The mesh file staged on its own thread, with its time and what it threw.
+struct Staging {
+  std::optional<StagedFile> file;
+  std::exception_ptr error;
+  double seconds = 0;
+};
+}  // namespace
 
 MeshRun mesh_loaded(const Options& opt, const LoadedInput& input, const Criteria& criteria,
                     MeshOptions base) {
@@ -21,9 +41,28 @@ MeshRun mesh_loaded(const Options& opt, const LoadedInput& input, const Criteria
   run.result = generate_mesh(*input.oracle, criteria, base);
 
   // The cheap measures and the fidelity check: a mesh that does not match the
-  // model is not written (unless asked).
+  // model is not written (unless asked). With a thread to spare the file is
+  // written meanwhile, under a temporary name: the check decides whether it
+  // replaces opt.output (write_outputs). The task ends before this function
+  // returns, so the mesh it reads stays where it is.
+  std::future<Staging> staging;
+  if (stage_while_checking(opt)) {
+    staging = std::async(std::launch::async, [&opt, &mesh = run.result.mesh] {
+      Staging s;
+      const Stopwatch clock;
+      try {
+        s.file.emplace(stage_mesh(mesh, opt.output, opt.write));
+      } catch (...) {
+        s.error = std::current_exception();
+      }
+      s.seconds = clock.seconds();
+      return s;
+    });
+  }
   const Stopwatch clock;
-  announce(base, "checking the mesh against the model");
+  announce(base, staging.valid()
+                     ? "checking the mesh against the model, writing " + printable(opt.output)
+                     : "checking the mesh against the model");
   const bool full = opt.full_check || !opt.report.empty();
   run.quality = measure_quality(run.result.mesh, full ? input.oracle.get() : nullptr, opt.threads);
   if (const auto model = model_measures(*input.oracle, opt.surface_only)) {
@@ -33,6 +72,12 @@ MeshRun mesh_loaded(const Options& opt, const LoadedInput& input, const Criteria
                        run.result.stats.curves_below_min_size);
   }
   run.times.report = clock.seconds();
+  if (staging.valid()) {
+    Staging s = staging.get();
+    run.staged_mesh = std::move(s.file);
+    run.staging_error = s.error;
+    run.staging_seconds = s.seconds;
+  }
   return run;
 }
 
@@ -67,8 +112,12 @@ void apply_fem(const Options& opt, const AppliedSizes& sizes, const DomainOracle
 void write_outputs(const Options& opt, const DomainOracle& oracle, const MeshOptions& options,
                    bool write_mesh_too, MeshRun& run) {
   const Stopwatch clock;
+  const bool staged = run.staged_mesh || run.staging_error;
   if (write_mesh_too) {
-    if (!opt.output.empty()) {
+    if (staged) {
+      if (run.staging_error) std::rethrow_exception(run.staging_error);
+      run.staged_mesh->commit();
+    } else if (!opt.output.empty()) {
       announce(options, "writing " + printable(opt.output));
       write_mesh(run.result.mesh, opt.output, opt.write);
     }
@@ -77,7 +126,8 @@ void write_outputs(const Options& opt, const DomainOracle& oracle, const MeshOpt
       write_picture(run.result.mesh, opt.picture, opt.input);
     }
   }
-  run.times.write = clock.seconds();
+  run.staged_mesh.reset();  // not wanted: its temporary file goes
+  run.times.write = clock.seconds() + (staged ? run.staging_seconds : 0.0);
   if (!opt.report.empty()) {
     announce(options, "writing " + printable(opt.report));
     const nlohmann::json report = run_report(opt, oracle, run);

@@ -55,5 +55,25 @@ TEST(CliOutputs, ImpossibleCombinationsAreRefusedUpFront) {
   }
 }
 
+TEST(CliOutputs, AFailedRunWritesNothingOnTwoThreadsAndKeepBadMeshWritesIt) {
+  // On two threads the mesh file is written while the mesh is checked, under
+  // a temporary name: a run that fails (here the time limit stops refinement)
+  // must drop it, and --keep-bad-mesh must still write it.
+  std::string stopped = "'";
+  stopped += source_path("samples/sphere.json");
+  stopped += "' --size 0.03 -q --time-limit 0.2 --threads 2 -o s.msh";
+  ScratchDir dir;
+  const CliRun run = run_cli(stopped, dir.path());
+  EXPECT_EQ(run.exit_code, 4) << run.output;
+  EXPECT_NE(run.output.find("no mesh written"), std::string::npos) << run.output;
+  EXPECT_EQ(dir.entries(), 0u);
+  stopped += " --keep-bad-mesh";
+  const CliRun kept = run_cli(stopped, dir.path());
+  EXPECT_EQ(kept.exit_code, 4) << kept.output;
+  EXPECT_NE(kept.output.find("written anyway"), std::string::npos) << kept.output;
+  EXPECT_EQ(dir.entries(), 1u);
+  EXPECT_EQ(read_file(dir.file("s.msh")).substr(0, 12), "$MeshFormat\n");
+}
+
 }  // namespace
 }  // namespace rdmesh::test

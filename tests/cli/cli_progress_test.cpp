@@ -19,10 +19,10 @@ class ProgressDelay {
 TEST(CliProgress, EveryPhaseLongerThanTheDelayIsShown) {
   ProgressDelay delay("0");
   ScratchDir dir;
-  const CliRun run = run_cli(std::string("'") + source_path("samples/cube.json") +
-                                 "' -o out.msh --size 0.4 --report r.json --picture p.png "
-                                 "--picture-size 400x320",
-                             dir.path());
+  const std::string args = std::string("'") + source_path("samples/cube.json") +
+                           "' -o out.msh --size 0.4 --report r.json --picture p.png "
+                           "--picture-size 400x320 --threads ";
+  const CliRun run = run_cli(args + "1", dir.path());
   ASSERT_EQ(run.exit_code, 0) << run.output;
   for (const char* phase :
        {"reading ", "checking the criteria: done in", "protecting sharp features: done in",
@@ -32,6 +32,14 @@ TEST(CliProgress, EveryPhaseLongerThanTheDelayIsShown) {
     EXPECT_NE(run.output.find(phase), std::string::npos) << "no '" << phase << "' in\n"
                                                          << run.output;
   }
+  // On two threads the mesh file is written while the mesh is checked: one phase.
+  const CliRun two = run_cli(args + "2", dir.path());
+  ASSERT_EQ(two.exit_code, 0) << two.output;
+  EXPECT_NE(two.output.find("checking the mesh against the model, writing out.msh: done in"),
+            std::string::npos)
+      << two.output;
+  EXPECT_EQ(two.output.find("\nwriting out.msh"), std::string::npos) << two.output;
+  EXPECT_NE(two.output.find("drawing p.png: done in"), std::string::npos) << two.output;
 }
 
 TEST(CliProgress, QuietAndShortRunsShowNone) {

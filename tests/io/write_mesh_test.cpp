@@ -132,5 +132,53 @@ TEST(WriteMesh, FailedWriteLeavesThePreviousFileAndNoTemporary) {
   EXPECT_EQ(entries(dir.path()), std::vector<std::string>{"a.msh"});
 }
 
+TEST(StageMesh, TheFileWaitsUnderItsTemporaryNameUntilCommitted) {
+  TempDir dir;
+  const std::string path = dir.file("a.mesh");
+  testing::write_text(path, "previous\n");
+  std::ostringstream expected;
+  write_medit(testing::two_cube_mesh(0.1), expected);
+  StagedFile staged = stage_mesh(testing::two_cube_mesh(0.1), path);
+  // Written in full beside the file, which is not touched yet.
+  ASSERT_FALSE(staged.temp_path().empty());
+  EXPECT_EQ(testing::read_text(staged.temp_path()), expected.str());
+  EXPECT_EQ(testing::read_text(path), "previous\n");
+  EXPECT_EQ(entries(dir.path()).size(), 2u);
+  // A move hands the temporary file over; the moved-from object owns nothing.
+  StagedFile moved = std::move(staged);
+  EXPECT_TRUE(staged.temp_path().empty());  // NOLINT(bugprone-use-after-move): what a move leaves
+  moved.commit();
+  EXPECT_EQ(testing::read_text(path), expected.str());
+  EXPECT_EQ(entries(dir.path()), std::vector<std::string>{"a.mesh"});
+  EXPECT_THROW(moved.commit(), InternalError);
+}
+
+TEST(StageMesh, ADroppedStageLeavesThePreviousFileAndNoTemporary) {
+  TempDir dir;
+  const std::string path = dir.file("a.msh");
+  testing::write_text(path, "previous\n");
+  {
+    StagedFile staged = stage_mesh(testing::two_cube_mesh(), path);
+    EXPECT_EQ(entries(dir.path()).size(), 2u);
+  }
+  EXPECT_EQ(testing::read_text(path), "previous\n");
+  EXPECT_EQ(entries(dir.path()), std::vector<std::string>{"a.msh"});
+  // Moving a stage over another drops the one overwritten.
+  StagedFile first = stage_mesh(testing::two_cube_mesh(), path);
+  first = stage_mesh(testing::two_cube_mesh(0.1), path);
+  EXPECT_EQ(entries(dir.path()).size(), 2u);
+}
+
+TEST(StageMesh, ACommitThatCannotRenameIsAnOutputErrorAndRemovesTheTemporary) {
+  TempDir dir;
+  const std::string path = dir.file("a.msh");
+  StagedFile staged = stage_mesh(testing::two_cube_mesh(), path);
+  fs::create_directory(path);  // a directory appeared where the file goes
+  fs::create_directory(path + "/inside");
+  EXPECT_THROW(staged.commit(), OutputError);
+  EXPECT_EQ(entries(dir.path()), std::vector<std::string>{"a.msh"});
+  EXPECT_TRUE(fs::is_directory(path));
+}
+
 }  // namespace
 }  // namespace rdmesh

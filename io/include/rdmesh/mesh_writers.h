@@ -22,6 +22,7 @@
 #include <iosfwd>
 #include <string>
 
+#include "rdmesh/atomic_file.h"
 #include "rdmesh/tet_mesh.h"
 
 namespace rdmesh {
@@ -111,6 +112,11 @@ void write_vtu_binary(const TetMesh& mesh, std::ostream& out);
 ///         written or renamed (e.g. missing or read-only directory);
 ///         InternalError if `mesh` is inconsistent (the temporary file is removed).
 void write_mesh(const TetMesh& mesh, const std::string& path, const WriteOptions& options = {});
+/// write_mesh without its last step: the file is written and flushed under
+/// its temporary name, and replaces `path` when the result is committed
+/// (dropped uncommitted, it is removed). Throws what write_mesh throws.
+StagedFile stage_mesh(const TetMesh& mesh, const std::string& path,
+                      const WriteOptions& options = {});
 
 /// Whether write_mesh writes `mesh` to a file of `format` in binary.
 /// @throws InputError when `options` ask what the format cannot do (binary Medit

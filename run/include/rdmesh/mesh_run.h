@@ -4,11 +4,13 @@
 // the mesh, exit codes and printing stay with the caller.
 #pragma once
 
+#include <exception>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "rdmesh/atomic_file.h"
 #include "rdmesh/criteria.h"
 #include "rdmesh/fem_options.h"
 #include "rdmesh/fidelity.h"
@@ -25,6 +27,11 @@ struct MeshRun {
   std::optional<FidelityReport> fidelity;  ///< CAD models and triangle meshes only
   RunTimes times;                          ///< `write` is the caller's to fill in
   FemResults fem;  ///< the caller's apply_fem_options, before writing (none on a failed run)
+  /// opt.output, written while the mesh was checked (on more than one thread,
+  /// when no FEM option changes the mesh): write_outputs commits or drops it.
+  std::optional<StagedFile> staged_mesh;
+  std::exception_ptr staging_error;  ///< what writing it threw, rethrown only if it is wanted
+  double staging_seconds = 0;        ///< the staging thread's time, counted as write time
 
   /// The time limit stopped refinement or the mesh failed the fidelity check.
   bool failed() const { return result.stats.time_limit_reached || (fidelity && !fidelity->passed); }
@@ -34,8 +41,9 @@ struct MeshRun {
 /// callback; the other MeshOptions come from `opt` (features, surface only,
 /// exudation, time limit). Measures every distance when opt.full_check or a
 /// report is asked for, then checks fidelity (model_measures), announced to the
-/// callback as the phase "checking the mesh against the model". Throws what
-/// generate_mesh throws; a failed check is not an exception (MeshRun::failed).
+/// callback as the phase "checking the mesh against the model". On more than
+/// one thread the mesh file is written meanwhile (MeshRun::staged_mesh). Throws
+/// what generate_mesh throws; a failed check is not an exception (MeshRun::failed).
 MeshRun mesh_loaded(const Options& opt, const LoadedInput& input, const Criteria& criteria,
                     MeshOptions base = {});
 
@@ -54,7 +62,8 @@ void apply_fem(const Options& opt, const AppliedSizes& sizes, const DomainOracle
 /// What `opt` asks to write, as the command does, each announced as a phase:
 /// with `write_mesh_too` the mesh (opt.output, opt.write) and the picture, then
 /// the report (always, when asked: a failed run's report says why). Sets
-/// run.times.write (mesh and picture). Empty paths are skipped.
+/// run.times.write (mesh and picture). Empty paths are skipped. A staged mesh
+/// file is committed, or dropped without `write_mesh_too`.
 void write_outputs(const Options& opt, const DomainOracle& oracle, const MeshOptions& options,
                    bool write_mesh_too, MeshRun& run);
 
