@@ -19,13 +19,6 @@ bool stage_while_checking(const Options& opt) {
   return !opt.output.empty() && resolve_threads(opt.threads) > 1 && opt.fem.order != 2 &&
          opt.fem.partitions == 0;
 }
-
-/// The mesh file staged on its own thread, with its time and what it threw.
-struct Staging {
-  std::optional<StagedFile> file;
-  std::exception_ptr error;
-  double seconds = 0;
-};
 }  // namespace
 
 MeshRun mesh_loaded(const Options& opt, const LoadedInput& input, const Criteria& criteria,
@@ -45,10 +38,10 @@ MeshRun mesh_loaded(const Options& opt, const LoadedInput& input, const Criteria
   // written meanwhile, under a temporary name: the check decides whether it
   // replaces opt.output (write_outputs). The task ends before this function
   // returns, so the mesh it reads stays where it is.
-  std::future<Staging> staging;
+  std::future<StagedMesh> staging;
   if (stage_while_checking(opt)) {
     staging = std::async(std::launch::async, [&opt, &mesh = run.result.mesh] {
-      Staging s;
+      StagedMesh s;
       const Stopwatch clock;
       try {
         s.file.emplace(stage_mesh(mesh, opt.output, opt.write));
@@ -72,12 +65,7 @@ MeshRun mesh_loaded(const Options& opt, const LoadedInput& input, const Criteria
                        run.result.stats.curves_below_min_size);
   }
   run.times.report = clock.seconds();
-  if (staging.valid()) {
-    Staging s = staging.get();
-    run.staged_mesh = std::move(s.file);
-    run.staging_error = s.error;
-    run.staging_seconds = s.seconds;
-  }
+  if (staging.valid()) run.staged = staging.get();
   return run;
 }
 
@@ -112,11 +100,11 @@ void apply_fem(const Options& opt, const AppliedSizes& sizes, const DomainOracle
 void write_outputs(const Options& opt, const DomainOracle& oracle, const MeshOptions& options,
                    bool write_mesh_too, MeshRun& run) {
   const Stopwatch clock;
-  const bool staged = run.staged_mesh || run.staging_error;
+  const bool staged = run.staged.started();
   if (write_mesh_too) {
     if (staged) {
-      if (run.staging_error) std::rethrow_exception(run.staging_error);
-      run.staged_mesh->commit();
+      if (run.staged.error) std::rethrow_exception(run.staged.error);
+      run.staged.file->commit();
     } else if (!opt.output.empty()) {
       announce(options, "writing " + printable(opt.output));
       write_mesh(run.result.mesh, opt.output, opt.write);
@@ -126,8 +114,8 @@ void write_outputs(const Options& opt, const DomainOracle& oracle, const MeshOpt
       write_picture(run.result.mesh, opt.picture, opt.input);
     }
   }
-  run.staged_mesh.reset();  // not wanted: its temporary file goes
-  run.times.write = clock.seconds() + (staged ? run.staging_seconds : 0.0);
+  run.staged.file.reset();  // not wanted: its temporary file goes
+  run.times.write = clock.seconds() + (staged ? run.staged.seconds : 0.0);
   if (!opt.report.empty()) {
     announce(options, "writing " + printable(opt.report));
     const nlohmann::json report = run_report(opt, oracle, run);

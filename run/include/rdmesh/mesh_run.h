@@ -20,6 +20,15 @@
 
 namespace rdmesh::run {
 
+/// The mesh file written on a second thread while the mesh was checked
+/// (mesh_loaded), waiting under its temporary name for write_outputs.
+struct StagedMesh {
+  std::optional<StagedFile> file;
+  std::exception_ptr error;  ///< what writing it threw, rethrown only if it is wanted
+  double seconds = 0;        ///< the staging thread's time, counted as write time
+  bool started() const { return file || error; }
+};
+
 struct MeshRun {
   Criteria criteria;
   MeshResult result;
@@ -29,9 +38,7 @@ struct MeshRun {
   FemResults fem;  ///< the caller's apply_fem_options, before writing (none on a failed run)
   /// opt.output, written while the mesh was checked (on more than one thread,
   /// when no FEM option changes the mesh): write_outputs commits or drops it.
-  std::optional<StagedFile> staged_mesh;
-  std::exception_ptr staging_error;  ///< what writing it threw, rethrown only if it is wanted
-  double staging_seconds = 0;        ///< the staging thread's time, counted as write time
+  StagedMesh staged;
 
   /// The time limit stopped refinement or the mesh failed the fidelity check.
   bool failed() const { return result.stats.time_limit_reached || (fidelity && !fidelity->passed); }
@@ -42,7 +49,7 @@ struct MeshRun {
 /// exudation, time limit). Measures every distance when opt.full_check or a
 /// report is asked for, then checks fidelity (model_measures), announced to the
 /// callback as the phase "checking the mesh against the model". On more than
-/// one thread the mesh file is written meanwhile (MeshRun::staged_mesh). Throws
+/// one thread the mesh file is written meanwhile (MeshRun::staged). Throws
 /// what generate_mesh throws; a failed check is not an exception (MeshRun::failed).
 MeshRun mesh_loaded(const Options& opt, const LoadedInput& input, const Criteria& criteria,
                     MeshOptions base = {});
