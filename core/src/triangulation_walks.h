@@ -79,16 +79,30 @@ class ConflictWalk {
   /// are seen from inside: (cell of the zone, index of the facet).
   void zone(const Triangulation& tr, const Weighted_point& p, Cell_handle start,
             std::vector<Cell_handle>& cells, std::vector<Triangulation::Facet>& boundary) {
+    zone_if(tr, p, start, cells, boundary, [](Cell_handle) { return true; });
+  }
+
+  /// As zone(), but reads a cell's vertices, and marks it, only once
+  /// accept(cell) said yes, for every cell of the zone and every cell next to
+  /// it: false, with `cells` and `boundary` incomplete, as soon as it says no.
+  /// A refinement lane walks this way (refinement_lanes.h): it never reads
+  /// nor writes past the cells it owns and their neighbours.
+  template <class Accept>
+  bool zone_if(const Triangulation& tr, const Weighted_point& p, Cell_handle start,
+               std::vector<Cell_handle>& cells, std::vector<Triangulation::Facet>& boundary,
+               Accept accept) {
     cells.clear();
     boundary.clear();
     auto in_conflict = [&](Cell_handle c) {
       return tr.side_of_power_sphere(c, p, /*perturb=*/true) == CGAL::ON_BOUNDED_SIDE;
     };
-    if (!in_conflict(start)) return;
+    if (!accept(start)) return false;
+    if (!in_conflict(start)) return true;
     stack_.clear();
     stack_.push_back(start);
     start->tds_data().mark_in_conflict();
     cells.push_back(start);
+    bool accepted = true;
     do {
       const Cell_handle c = stack_.back();
       stack_.pop_back();
@@ -102,6 +116,10 @@ class ConflictWalk {
         const Cell_handle test = c->neighbor(i);
         if (test->tds_data().is_in_conflict()) continue;
         if (test->tds_data().is_clear()) {
+          if (!accept(test)) {
+            accepted = false;
+            break;
+          }
           if (in_conflict(test)) {
             stack_.push_back(test);
             test->tds_data().mark_in_conflict();
@@ -112,9 +130,10 @@ class ConflictWalk {
         }
         boundary.emplace_back(c, i);
       }
-    } while (!stack_.empty());
+    } while (accepted && !stack_.empty());
     for (const Triangulation::Facet& f : boundary) f.first->neighbor(f.second)->tds_data().clear();
     for (const Cell_handle& c : cells) c->tds_data().clear();
+    return accepted;
   }
 
  private:

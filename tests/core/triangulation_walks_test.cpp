@@ -83,5 +83,44 @@ TEST(TriangulationWalks, ConflictWalkListsCgalsZoneAndBoundaryInTheirOrder) {
   expect_all_flags_clear(tr);
 }
 
+TEST(TriangulationWalks, ConflictWalkIfStopsAtTheFirstCellRefusedAndLeavesNoMark) {
+  std::mt19937 rng(19);
+  const Triangulation tr = random_triangulation(rng);
+  ConflictWalk walk;
+  std::vector<Cell_handle> all, some;
+  std::vector<Triangulation::Facet> all_boundary, some_boundary;
+  int refused = 0, accepted = 0;
+  for (int i = 0; i < 1000; ++i) {
+    const Weighted_point p = random_point(rng, 0.0);
+    const Cell_handle start = tr.locate(p);
+    walk.zone(tr, p, start, all, all_boundary);
+    // Accepting every cell: zone() itself.
+    ASSERT_TRUE(walk.zone_if(tr, p, start, some, some_boundary, [](Cell_handle) { return true; }));
+    ASSERT_EQ(some, all);
+    ASSERT_EQ(some_boundary, all_boundary);
+    // Refusing the cells on one side of a plane: true exactly when the zone
+    // and every cell next to it lie on the other side, then the same zone.
+    auto below = [&](Cell_handle c) {
+      for (int k = 0; k < 4; ++k)
+        if (tr.is_infinite(c->vertex(k)) || c->vertex(k)->point().x() >= 0.2) return false;
+      return true;
+    };
+    bool all_below = below(start);
+    for (const Cell_handle& c : all) all_below = all_below && below(c);
+    for (const auto& f : all_boundary) all_below = all_below && below(f.first->neighbor(f.second));
+    const bool ok = walk.zone_if(tr, p, start, some, some_boundary, below);
+    ASSERT_EQ(ok, all_below) << "point " << i;
+    if (ok) {
+      ASSERT_EQ(some, all);
+      ASSERT_EQ(some_boundary, all_boundary);
+    }
+    for (const Cell_handle& c : some) ASSERT_TRUE(below(c));  // never past a refused cell
+    (ok ? accepted : refused)++;
+    expect_all_flags_clear(tr);
+  }
+  EXPECT_GT(refused, 100);
+  EXPECT_GT(accepted, 100);
+}
+
 }  // namespace
 }  // namespace rdmesh::detail
