@@ -5,6 +5,7 @@
 
 #include "level_curves.h"
 #include "level_facets.h"
+#include "optimize/exudation_lanes.h"
 #include "rdmesh/debug_assert.h"
 #include "simplex_geometry.h"
 
@@ -18,13 +19,13 @@ namespace {
 /// doubling lost half of the speed-up).
 constexpr double kBucketsPerDoubling = 4.0;
 constexpr std::size_t kLastBucket = 256;
+}  // namespace
 
-std::size_t bucket_of(double priority) {
+std::size_t CellLevel::bucket_of(double priority) {
   if (!(priority > 1.0)) return 0;
   const double b = std::floor(std::log2(priority) * kBucketsPerDoubling);
   return b >= static_cast<double>(kLastBucket) ? kLastBucket : static_cast<std::size_t>(b);
 }
-}  // namespace
 
 CellLevel::CellLevel(const RestrictedComplex& complex, const Criteria& criteria)
     : complex_(complex),
@@ -55,7 +56,14 @@ Violation CellLevel::violation(Cell_handle c) const {
 
 void CellLevel::consider(Cell_handle c) {
   const Violation v = violation(c);
-  if (v) queue_.push(bucket_of(v.priority), {v.priority, c, c->info().stamp, -1});
+  if (!v) return;
+  const ElementEntry e = entry(c, v);
+  if (lanes_on_ && c->info().squared_radius < lane_max_squared_radius_) {
+    for (int lane = 0; lane < 2; ++lane) {
+      if (in_lane(c, lane)) return lanes_[lane].push(bucket_of(v.priority), e);
+    }
+  }
+  queue_.push(bucket_of(v.priority), e);
 }
 
 std::optional<ElementEntry> CellLevel::pop() {

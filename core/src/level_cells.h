@@ -29,11 +29,33 @@ class CellLevel {
 
   /// The worst rule cell c violates; Rule::kNone outside the domain.
   Violation violation(Cell_handle c) const;
-  /// Queues cell c when it violates a rule.
+  /// Queues cell c when it violates a rule: in the queue of the refinement
+  /// lane that owns it when lanes are on (set_lanes), else in the level's.
   void consider(Cell_handle c);
 
+  /// The level's own queue (the sequential steps') is empty.
   bool empty() const { return queue_.empty(); }
-  std::size_t size() const { return queue_.size(); }
+  /// Every queued entry, the lanes' too.
+  std::size_t size() const { return queue_.size() + lanes_[0].size() + lanes_[1].size(); }
+
+  /// Refinement lanes (refinement_lanes.h): while on, consider() sends a cell
+  /// all of whose vertices hold lane k's bit to lane k's queue.
+  /// Cells whose ball has a squared radius of `max_squared_radius` or more
+  /// stay in the level's queue: their zones reach across the cut.
+  void set_lanes(bool on, double max_squared_radius) {
+    lanes_on_ = on;
+    lane_max_squared_radius_ = max_squared_radius;
+  }
+  BucketQueue<ElementEntry>& lane_queue(int lane) { return lanes_[lane]; }
+  const BucketQueue<ElementEntry>& lane_queue(int lane) const { return lanes_[lane]; }
+  /// Queues an entry for the sequential steps (one a lane could not refine).
+  void push(const ElementEntry& e) { queue_.push(bucket_of(e.priority), e); }
+  /// The entry of cell c for `v`, its violation.
+  static ElementEntry entry(Cell_handle c, const Violation& v) {
+    return {v.priority, c, c->info().stamp, -1};
+  }
+  /// The queue bucket of a priority.
+  static std::size_t bucket_of(double priority);
   /// Pops the worst entry: the cell, if it still exists and still violates a
   /// rule; else nullopt (the entry was stale).
   std::optional<ElementEntry> pop();
@@ -47,6 +69,8 @@ class CellLevel {
   /// Frees the queue's storage once it is empty (its peak size is no longer needed).
   void release_if_empty() {
     if (queue_.empty()) queue_.release();
+    for (BucketQueue<ElementEntry>& q : lanes_)
+      if (q.empty()) q.release();
   }
 
  private:
@@ -54,6 +78,9 @@ class CellLevel {
   const Criteria& criteria_;
   double shape_bound_sq_;  ///< beta_3^2
   BucketQueue<ElementEntry> queue_;
+  BucketQueue<ElementEntry> lanes_[2];
+  bool lanes_on_ = false;
+  double lane_max_squared_radius_ = 0;
 };
 
 }  // namespace rdmesh::detail

@@ -45,9 +45,39 @@ void RestrictedComplex::kill(CellInfo& c) {
   c.stamp = 0;
 }
 
-void RestrictedComplex::init_cell(Cell_handle c, Cell_handle from) {
+void RestrictedComplex::reserve_stamp_blocks(std::uint32_t each, std::vector<StampBlock>& blocks) {
+  // Each block starts on a fresh word of live bits: a lane's plain reads of
+  // its own new bits never meet another lane's writes in the same word.
+  for (StampBlock& b : blocks) {
+    next_stamp_ = (next_stamp_ + 63u) & ~63u;
+    b.next = next_stamp_;
+    b.end = next_stamp_ + each;
+    next_stamp_ = b.end;
+  }
+  if ((next_stamp_ >> 6) >= live_.size()) live_.resize((next_stamp_ >> 6) + 1024, 0);
+}
+
+void RestrictedComplex::init_cell_in_lane(Cell_handle c, Cell_handle from, StampBlock& block) {
   CellInfo& info = c->info();
-  stamp_new(info);
+  info.stamp = block.next++;
+  std::atomic_ref<std::uint64_t>(live_[info.stamp >> 6])
+      .fetch_or(std::uint64_t{1} << (info.stamp & 63), std::memory_order_relaxed);
+  label_cell(c, from);
+}
+
+void RestrictedComplex::kill_in_lane(CellInfo& c) {
+  std::atomic_ref<std::uint64_t>(live_[c.stamp >> 6])
+      .fetch_and(~(std::uint64_t{1} << (c.stamp & 63)), std::memory_order_relaxed);
+  c.stamp = 0;
+}
+
+void RestrictedComplex::init_cell(Cell_handle c, Cell_handle from) {
+  stamp_new(c->info());
+  label_cell(c, from);
+}
+
+void RestrictedComplex::label_cell(Cell_handle c, Cell_handle from) {
+  CellInfo& info = c->info();
   info.facet_patch.fill(kNotRestricted);
   info.crossing_facet = -1;
   if (tr_.is_infinite(c)) {

@@ -8,6 +8,7 @@
 // the curves' D|L_j in restricted_curves.h.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -52,14 +53,36 @@ class RestrictedComplex {
 
   /// The stamp the next initialized cell gets (stamps only grow).
   std::uint32_t next_stamp() const { return next_stamp_; }
-  /// Whether the cell stamped `stamp` still exists.
-  bool is_live(std::uint32_t stamp) const { return (live_[stamp >> 6] >> (stamp & 63)) & 1; }
+  /// Whether the cell stamped `stamp` still exists. (An atomic load, a plain
+  /// one on x86: refinement lanes read it while others mark their cells.)
+  bool is_live(std::uint32_t stamp) const {
+    auto& word = const_cast<std::uint64_t&>(live_[stamp >> 6]);
+    return (std::atomic_ref<std::uint64_t>(word).load(std::memory_order_relaxed) >> (stamp & 63)) &
+           1;
+  }
   /// Marks a cell about to be destroyed: its stamp becomes dead.
   void kill(CellInfo& c);
+
+  /// A refinement lane's own stamps (refinement_lanes.h): [next, end).
+  struct StampBlock {
+    std::uint32_t next = 0;
+    std::uint32_t end = 0;
+    std::uint32_t left() const { return end - next; }
+  };
+  /// Hands out the next blocks.size() runs of `each` stamps, one per lane,
+  /// with room for their live bits; next_stamp() passes them all.
+  void reserve_stamp_blocks(std::uint32_t each, std::vector<StampBlock>& blocks);
+  /// init_cell() with a stamp from `block`, marked live by an atomic write:
+  /// lanes initialize cells at once (their bits may share a word).
+  void init_cell_in_lane(Cell_handle c, Cell_handle from, StampBlock& block);
+  /// kill() by an atomic write, for a lane.
+  void kill_in_lane(CellInfo& c);
 
  private:
   /// Gives c the next stamp and marks it live.
   void stamp_new(CellInfo& c);
+  /// init_cell() once c is stamped.
+  void label_cell(Cell_handle c, Cell_handle from);
   /// The crossing init_cell() kept for facet (c, i), when it was found against
   /// the present neighbor n; forgotten either way.
   std::optional<SurfaceHit> take_crossing(Cell_handle c, int i, Cell_handle n);

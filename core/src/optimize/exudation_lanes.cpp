@@ -24,6 +24,10 @@ void assign_lanes(Triangulation& tr, const std::vector<Vertex_handle>& work, int
     std::nth_element(values.begin(), middle, values.end());
     split = *middle;
   }
+  assign_lanes_at(tr, axis, split);
+}
+
+void assign_lanes_at(Triangulation& tr, int axis, double split) {
   for (auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
     v->info().lane = lane_bit(coordinate(v, axis) < split ? 0 : 1);
   const Vertex_handle infinite = tr.infinite_vertex();

@@ -42,6 +42,13 @@ inline bool in_lane(Cell_handle c, int lane) {
 /// in both lanes (its cell() then becomes that cell, so no lane rewrites it),
 /// else kNoLane.
 void assign_lanes(Triangulation& tr, const std::vector<Vertex_handle>& work, int axis);
+/// The same cut at `split` on `axis`: lane 0 below, 1 at or above.
+void assign_lanes_at(Triangulation& tr, int axis, double split);
+/// The lane bit of a point for the cut at `split` on `axis`.
+inline std::uint8_t lane_bit_at(const Point3& p, int axis, double split) {
+  const double x = axis == 0 ? p.x : axis == 1 ? p.y : p.z;
+  return lane_bit(x < split ? 0 : 1);
+}
 
 /// The three axes by decreasing extent of the triangulation's finite vertices.
 std::array<int, 3> axes_by_extent(const Triangulation& tr);
