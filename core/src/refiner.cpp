@@ -43,7 +43,10 @@ Refiner::Refiner(const DomainOracle& oracle, const Criteria& criteria, const Mes
       curve_level_(make_curve_level(plan, curves_, complex_, oracle, criteria_)),
       facets_(complex_, criteria_),
       cells_(complex_, criteria_),
-      scheduler_(*curve_level_, facets_, cells_, insertion_) {
+      scheduler_(*curve_level_, facets_, cells_, insertion_),
+      lanes_(complex_, cells_, facets_, *curve_level_, criteria_,
+             criteria_.min_size_for(oracle.bounding_box()),
+             options.oracle_concurrent ? options.threads : 1) {
   complex_.set_feature_patches(curves_.corner_patches(), curves_.curve_patches());
   insertion_.set_observer(this);
   new_cells_.reserve(128);
@@ -71,8 +74,10 @@ void Refiner::insert_initial_points() {
     throw OracleError("the oracle's initial points span no volume (" +
                       std::to_string(stats_.initial_points) + " points): cannot start refinement");
   }
-  // 4. The restricted complex of P_0, and the levels' first queues.
+  // 4. The restricted complex of P_0, and the levels' first queues (the cells
+  // in the lanes' queues where a lane owns them).
   complex_.init_unstamped_cells();
+  lanes_.start();
   for (auto c = tr_.all_cells_begin(); c != tr_.all_cells_end(); ++c) {
     for (int i = 0; i < 4; ++i) {
       if (c->neighbor(i)->info().stamp > c->info().stamp) update_facet(c, i);
@@ -121,6 +126,19 @@ void Refiner::refine(bool stop_on_conflict) {
   for (;;) {
     const RefinementScheduler::Step step = scheduler_.step(stop_on_conflict);
     if (step == RefinementScheduler::Step::kStale) continue;
+    if (step == RefinementScheduler::Step::kDone && lanes_.pending()) {
+      // The sequential steps are done: the lanes refine their cells.
+      if (stop_on_conflict && curve_level_->has_conflicts()) break;
+      const bool late = lanes_.round(stats_, deadline_);
+      if (options_.progress) report_progress();
+      if (late || deadline_.passed(1)) {
+        stats_.time_limit_reached = true;
+        stats_.stopped_in = MeshingPhase::refinement;
+        stats_.elements_left = scheduler_.queued();
+        break;
+      }
+      continue;
+    }
     if (step != RefinementScheduler::Step::kRefined) break;
     if (options_.progress && ++insertions_since_progress_ >= kProgressEvery) report_progress();
     if (deadline_.passed(Deadline::kCheckEvery)) {
@@ -137,6 +155,7 @@ void Refiner::refine(bool stop_on_conflict) {
 void Refiner::zone_found(const std::vector<Cell_handle>& zone) { curve_level_->zone_found(zone); }
 
 void Refiner::inserted(Vertex_handle v) {
+  lanes_.place(v);
   walk_.cells(v, new_cells_);
   const std::uint32_t first_new = complex_.next_stamp();
   // Each new cell's facet opposite v bounds the conflict zone: the cell

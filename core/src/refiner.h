@@ -28,6 +28,7 @@
 #include "rdmesh/criteria.h"
 #include "rdmesh/mesher.h"
 #include "rdmesh/oracle.h"
+#include "refinement_lanes.h"
 #include "refinement_scheduler.h"
 #include "restricted_complex.h"
 #include "restricted_curves.h"
@@ -107,6 +108,7 @@ class Refiner final : private InsertionObserver {
   FacetLevel facets_;                        ///< R3-R4
   CellLevel cells_;                          ///< R5
   RefinementScheduler scheduler_;
+  RefinementLanes lanes_;  ///< R5 in two lanes, between the scheduler's sequential steps
 
   std::vector<Cell_handle> new_cells_;  ///< scratch: the star of the vertex just inserted
   StarWalk walk_;

@@ -105,7 +105,10 @@ MeshOptions progress_options(const py::object& progress) {
 /// oracle, so other threads may run.
 PyMesh mesh_input(const run::Options& opt, const run::LoadedInput& input,
                   const py::object& progress, bool release_gil, double seconds_load) {
-  const MeshOptions options = progress_options(progress);
+  MeshOptions options = progress_options(progress);
+  // Python code in the oracle needs the GIL, which this thread keeps: every
+  // query stays here.
+  options.oracle_concurrent = release_gil;
   std::optional<py::gil_scoped_release> release;
   if (release_gil) release.emplace();
   run::announce(options, "checking the criteria");

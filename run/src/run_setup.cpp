@@ -406,6 +406,9 @@ nlohmann::json report_json(const Options& opt, const Criteria& criteria, const D
                      {"edge_centers_inserted", stats.inserted_edge_centers},
                      {"facet_centers_inserted", stats.inserted_facet_centers},
                      {"cell_centers_inserted", stats.inserted_cell_centers},
+                     {"cell_centers_in_lanes", stats.cell_centers_in_lanes},
+                     {"lane_rounds", stats.lane_rounds},
+                     {"lane_steps", stats.lane_steps},
                      {"encroachments", stats.encroachments},
                      {"time_limit_reached", stats.time_limit_reached},
                      {"elements_left", stats.elements_left}};

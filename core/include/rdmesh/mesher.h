@@ -65,6 +65,11 @@ struct MeshOptions {
   /// Threads of the phases that use them (0: all cores). The output does not
   /// depend on it: parallel work is split and combined by fixed rules.
   int threads = 0;
+  /// Whether the oracle answers queries from several threads at once (its
+  /// contract, rdmesh/oracle.h). False for oracles that call back into an
+  /// interpreter holding a lock on the meshing thread (Python callables):
+  /// then every oracle query stays on the calling thread (same output).
+  bool oracle_concurrent = true;
 };
 
 /// The phases a time limit can stop (RefinementStats::stopped_in).
@@ -83,7 +88,12 @@ struct RefinementStats {
   std::size_t inserted_facet_centers = 0;  ///< points inserted by R3/R4
   std::size_t inserted_cell_centers = 0;   ///< points inserted by R5
   std::size_t encroachments = 0;           ///< points redirected to an encroached facet or edge
-  std::size_t guard_rejections = 0;        ///< refinement points refused by the minimum-size guard
+  /// Of inserted_cell_centers, those the refinement lanes inserted (two parts
+  /// of space side by side, on up to two threads), and their rounds.
+  std::size_t cell_centers_in_lanes = 0;
+  std::size_t lane_rounds = 0;
+  std::size_t lane_steps = 0;  ///< steps of those rounds (the lanes' pools topped up before each)
+  std::size_t guard_rejections = 0;  ///< refinement points refused by the minimum-size guard
   bool guard_fired() const { return guard_rejections > 0; }
   /// The features involved in guard rejections, e.g. "curve 2 near patch 3"
   /// (distinct pairs, at most kMaxListed).

@@ -1,0 +1,334 @@
+#include "refinement_lanes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+#include "optimize/exudation_lanes.h"
+#include "rdmesh/parallel_for.h"
+
+namespace rdmesh::detail {
+
+namespace {
+/// A lane refines at most this many cells per round (then the cut moves).
+constexpr std::size_t kMaxQuota = 1 << 17;
+constexpr std::size_t kMinQuota = 1 << 12;
+/// A lane's pools hold the cells, vertices and stamps of as many insertions
+/// as a sixteenth of the cells it has queued (it inserts about one for six),
+/// within these bounds.
+constexpr std::size_t kQueuedPerStep = 16;
+constexpr std::size_t kMinStep = 1 << 6;
+constexpr std::size_t kMaxStep = 1 << 12;
+/// Pool cells per insertion: a cone has about 6.5 cells more than its zone.
+constexpr std::size_t kCellsPerInsertion = 7;
+/// An entry whose zone crossed the cut once (ElementEntry::facet, -1 for cells).
+constexpr int kCrossedOnce = -2;
+/// A conflict zone seldom reaches further from the centre than this many radii.
+constexpr double kBallReach = 3.0;
+/// Cells with a radius above the domain's extent over this stay sequential:
+/// the coarse start of refinement, whose zones cross any cut.
+constexpr double kCoarse = 16.0;
+/// Stamps per insertion: every cell of a cone gets one (about 25 on average).
+constexpr std::uint32_t kStampsPerInsertion = 32;
+/// Slack for the insertions that create more than the averages above.
+constexpr std::size_t kSlack = 2048;
+
+double coordinate(const Point3& p, int axis) { return axis == 0 ? p.x : axis == 1 ? p.y : p.z; }
+}  // namespace
+
+struct RefinementLanes::Lane {
+  Lane(Triangulation& tr, int lane, const Deadline& run_deadline)
+      : id(lane), pool(tr), deadline(run_deadline) {}
+
+  struct FoundFacet {
+    Cell_handle cell;
+    int facet;
+    std::uint32_t stamp;
+  };
+
+  int id;
+  CellPool pool;
+  std::vector<Vertex_handle> vertices;  ///< the vertices it may insert
+  RestrictedComplex::StampBlock stamps;
+  Deadline deadline;
+  bool out_of_time = false;
+  bool full = false;  ///< stopped in a step for want of pool, quota left
+  std::size_t inserted = 0;
+  std::size_t quota = 0;               ///< insertions this round at most
+  std::size_t step = 0;                ///< insertions per step at most
+  std::size_t step_quota = 0;          ///< insertions the pools hold in this step
+  std::size_t step_end = 0;            ///< `inserted` at which the step ends
+  std::vector<ElementEntry> deferred;  ///< for the sequential steps
+  std::vector<ElementEntry> crossed;   ///< zones across the cut, for the next round
+  std::vector<FoundFacet> facets;      ///< facets it found in D|S, for the facet level
+  // Scratch.
+  ConflictWalk walk;
+  ConeBuilder cone;
+  std::vector<Cell_handle> zone, created;
+  std::vector<Triangulation::Facet> boundary;
+  std::vector<HoleFacet> hole;
+};
+
+RefinementLanes::RefinementLanes(RestrictedComplex& complex, CellLevel& cells, FacetLevel& facets,
+                                 const CurveLevel& curves, const Criteria& criteria,
+                                 double min_size, int threads)
+    : complex_(complex),
+      tr_(complex.triangulation()),
+      cells_(cells),
+      facets_(facets),
+      curves_(curves),
+      min_size_sq_(min_size * min_size),
+      threads_(criteria.cell_size.field ? 1 : threads) {}
+
+void RefinementLanes::start() {
+  axes_ = axes_by_extent(tr_);
+  axis_ = axes_[0];
+  std::vector<double> values;
+  for (auto v = tr_.finite_vertices_begin(); v != tr_.finite_vertices_end(); ++v)
+    values.push_back(coordinate(to_point3(v->point()), axis_));
+  split_ = 0;
+  if (!values.empty()) {
+    const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+    std::nth_element(values.begin(), middle, values.end());
+    split_ = *middle;
+  }
+  assign_lanes_at(tr_, axis_, split_);
+  double lo = split_, hi = split_;
+  for (const double x : values) {
+    lo = std::min(lo, x);
+    hi = std::max(hi, x);
+  }
+  const double reach = (hi - lo) / kCoarse;
+  cells_.set_lanes(true, reach * reach);
+}
+
+void RefinementLanes::place(Vertex_handle v) const {
+  v->info().lane = lane_bit_at(to_point3(v->point()), axis_, split_);
+}
+
+bool RefinementLanes::pending() const {
+  return !cells_.lane_queue(0).empty() || !cells_.lane_queue(1).empty() || !crossed_.empty();
+}
+
+bool RefinementLanes::round(RefinementStats& stats, const Deadline& deadline) {
+  ++stats_.rounds;
+  ++stats.lane_rounds;
+  // 1. A new cut through the middle of the queued cells' centres.
+  std::vector<ElementEntry> entries;
+  entries.swap(crossed_);
+  for (int l = 0; l < 2; ++l) {
+    BucketQueue<ElementEntry>& q = cells_.lane_queue(l);
+    while (!q.empty()) {
+      const ElementEntry e = q.pop();
+      if (complex_.is_live(e.stamp)) entries.push_back(e);
+    }
+  }
+  axis_ = axes_[stats_.rounds % 2];
+  std::vector<double> values;
+  values.reserve(entries.size());
+  for (const ElementEntry& e : entries)
+    values.push_back(coordinate(e.cell->info().circumcenter, axis_));
+  if (!values.empty()) {
+    const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+    std::nth_element(values.begin(), middle, values.end());
+    split_ = *middle;
+  }
+  assign_lanes_at(tr_, axis_, split_);
+  // Oldest first, so that each queue's newest entries come out first, as before.
+  for (auto e = entries.rbegin(); e != entries.rend(); ++e) {
+    if (in_lane(e->cell, 0)) {
+      cells_.lane_queue(0).push(CellLevel::bucket_of(e->priority), *e);
+    } else if (in_lane(e->cell, 1)) {
+      cells_.lane_queue(1).push(CellLevel::bucket_of(e->priority), *e);
+    } else {
+      cells_.push(*e);
+    }
+  }
+  if (cells_.lane_queue(0).empty() && cells_.lane_queue(1).empty()) return false;
+
+  // 2. Both lanes at once, in steps: before each, on this thread, each lane's
+  // pools get the vertices, cells and stamps of another `step`
+  // insertions (the container grows by little more than the mesh needs);
+  // a lane stops when they run low, or after its round quota.
+  std::unique_ptr<Lane> lanes[2];
+  for (int l = 0; l < 2; ++l) {
+    lanes[l] = std::make_unique<Lane>(tr_, l, deadline);
+    const std::size_t queued = cells_.lane_queue(l).size();
+    lanes[l]->quota = std::clamp(2 * queued, kMinQuota, kMaxQuota);
+    lanes[l]->step = std::clamp(queued / kQueuedPerStep, kMinStep, kMaxStep);
+  }
+  std::vector<RestrictedComplex::StampBlock> blocks(2);
+  for (;;) {
+    ++stats.lane_steps;
+    std::size_t step = 0;
+    for (int l = 0; l < 2; ++l) {
+      Lane& lane = *lanes[l];
+      lane.step_quota = std::min(lane.step, lane.quota - lane.inserted);
+      step = std::max(step, lane.step_quota);
+    }
+    complex_.reserve_stamp_blocks(static_cast<std::uint32_t>(step * kStampsPerInsertion + kSlack),
+                                  blocks);
+    for (int l = 0; l < 2; ++l) {
+      Lane& lane = *lanes[l];
+      lane.stamps = blocks[static_cast<std::size_t>(l)];
+      lane.step_end = lane.inserted + lane.step_quota;
+      lane.pool.fill(lane.step_quota * kCellsPerInsertion + kSlack);
+      while (lane.vertices.size() < lane.step_quota)
+        lane.vertices.push_back(tr_.tds().create_vertex());
+      lane.full = false;
+    }
+    parallel_tasks(2, threads_, [&](std::size_t l) { run(*lanes[l]); });
+    bool again = false, late = false;
+    for (const std::unique_ptr<Lane>& lane : lanes) {
+      again = again || (lane->full && lane->inserted < lane->quota);
+      late = late || lane->out_of_time;
+    }
+    if (late || !again) break;
+  }
+
+  // 4. What they did, lane by lane.
+  bool out_of_time = false;
+  for (int l = 0; l < 2; ++l) {
+    Lane& lane = *lanes[l];
+    stats.inserted_cell_centers += lane.inserted;
+    stats.cell_centers_in_lanes += lane.inserted;
+    stats_.inserted += lane.inserted;
+    stats_.deferred += lane.deferred.size();
+    for (const ElementEntry& e : lane.deferred)
+      if (complex_.is_live(e.stamp)) cells_.push(e);
+    for (const ElementEntry& e : lane.crossed)
+      if (complex_.is_live(e.stamp)) crossed_.push_back(e);
+    for (const Lane::FoundFacet& f : lane.facets)
+      if (complex_.is_live(f.stamp)) facets_.consider(f.cell, f.facet);
+    lane.pool.release();
+    for (const Vertex_handle& v : lane.vertices) tr_.tds().delete_vertex(v);
+    out_of_time = out_of_time || lane.out_of_time;
+  }
+  return out_of_time;
+}
+
+void RefinementLanes::run(Lane& lane) {
+  BucketQueue<ElementEntry>& queue = cells_.lane_queue(lane.id);
+  while (!queue.empty()) {
+    if (lane.deadline.passed(Deadline::kCheckEvery)) {
+      lane.out_of_time = true;
+      return;
+    }
+    if (lane.inserted == lane.step_end) {
+      lane.full = true;
+      return;
+    }
+    const ElementEntry e = queue.pop();
+    switch (refine(lane, e)) {
+      case Outcome::kDeferred:
+        lane.deferred.push_back(e);
+        break;
+      case Outcome::kCrossed:
+        // The next round cuts across the other axis: most such zones are then
+        // inside one lane. A second time, the sequential steps take it.
+        if (e.facet == kCrossedOnce) {
+          lane.deferred.push_back(e);
+        } else {
+          ElementEntry once = e;
+          once.facet = kCrossedOnce;
+          lane.crossed.push_back(once);
+        }
+        break;
+      case Outcome::kFull:
+        queue.push(CellLevel::bucket_of(e.priority), e);
+        lane.full = true;
+        return;
+      case Outcome::kInserted:
+      case Outcome::kDropped:
+        break;
+    }
+  }
+}
+
+RefinementLanes::Outcome RefinementLanes::refine(Lane& lane, const ElementEntry& e) {
+  const Cell_handle c = e.cell;
+  if (!complex_.is_live(e.stamp)) return Outcome::kDropped;
+  if (!in_lane(c, lane.id)) return Outcome::kDeferred;
+  if (!cells_.violation(c)) return Outcome::kDropped;
+  if (curves_.keeps_cell_centre(c)) return Outcome::kDropped;
+  const Point3 center = c->info().circumcenter;
+  // A ball across the cut: its zone nearly always crosses too, and finding
+  // that out costs a walk. The next round's cut is across another axis.
+  const double to_cut = coordinate(center, axis_) - split_;
+  if (to_cut * to_cut < kBallReach * kBallReach * c->info().squared_radius) {
+    return Outcome::kCrossed;
+  }
+  const Weighted_point p = to_weighted(center);
+  const Vertex_handle infinite = tr_.infinite_vertex();
+  // The lane's own cells without features: the curve level has nothing to see
+  // in the zone, and nothing outside the lane is read or written. (Infinite
+  // cells are a lane's when the infinite vertex holds every lane, see
+  // assign_lanes_at: then its cell() is one that neither lane owns.)
+  auto owned = [&](Cell_handle x) {
+    if (!in_lane(x, lane.id)) {
+      return false;
+    }
+    for (int k = 0; k < 4; ++k) {
+      const Vertex_handle w = x->vertex(k);
+      if (w->info().dim() <= FeatureDim::kCurve || w->point().weight() != 0) {
+        return false;
+      }
+    }
+    return true;
+  };
+  if (!lane.walk.zone_if(tr_, p, c, lane.zone, lane.boundary, owned)) {
+    return Outcome::kCrossed;
+  }
+  if (lane.zone.empty()) return Outcome::kDeferred;
+  // refine-tet-facet-or-edge: an encroached facet is refined first (sequentially).
+  Cell_handle fc;
+  int fi = -1;
+  if (facets_.encroached(center, lane.zone, fc, fi)) {
+    return Outcome::kDeferred;
+  }
+  // The minimum-size guard: the sequential steps refuse and record it.
+  for (const Cell_handle& z : lane.zone) {
+    for (int k = 0; k < 4; ++k) {
+      if (z->vertex(k) != infinite &&
+          squared_norm(to_point3(z->vertex(k)->point()) - center) < min_size_sq_) {
+        return Outcome::kDeferred;
+      }
+    }
+  }
+  const std::size_t extra =
+      lane.boundary.size() > lane.zone.size() ? lane.boundary.size() - lane.zone.size() : 0;
+  if (extra > lane.pool.size() || lane.boundary.size() > lane.stamps.left() ||
+      lane.vertices.empty())
+    return Outcome::kFull;
+
+  for (const Cell_handle& z : lane.zone) complex_.kill_in_lane(z->info());
+  const Vertex_handle v = lane.vertices.back();
+  lane.vertices.pop_back();
+  v->set_point(p);
+  v->info() = VertexInfo{};
+  v->info().lane = lane_bit(lane.id);
+  lane.hole.clear();
+  for (const Triangulation::Facet& f : lane.boundary) lane.hole.push_back({f.first, f.second});
+  lane.cone.build(tr_, lane.zone, lane.hole, v, &lane.pool, lane.created);
+
+  // As Refiner::inserted: labels, D|S around the star, the new bad cells.
+  const std::uint32_t first_new = lane.stamps.next;
+  for (const Cell_handle& n : lane.created)
+    complex_.init_cell_in_lane(n, n->neighbor(n->index(v)), lane.stamps);
+  for (const Cell_handle& n : lane.created) {
+    for (int i = 0; i < 4; ++i) {
+      const std::uint32_t ns = n->neighbor(i)->info().stamp;
+      if ((ns < first_new || ns > n->info().stamp) && complex_.update_facet(n, i))
+        lane.facets.push_back({n, i, n->info().stamp});
+    }
+  }
+  BucketQueue<ElementEntry>& queue = cells_.lane_queue(lane.id);
+  for (const Cell_handle& n : lane.created) {
+    const Violation bad = cells_.violation(n);
+    if (bad) queue.push(CellLevel::bucket_of(bad.priority), CellLevel::entry(n, bad));
+  }
+  ++lane.inserted;
+  return Outcome::kInserted;
+}
+
+}  // namespace rdmesh::detail

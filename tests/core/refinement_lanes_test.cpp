@@ -1,0 +1,101 @@
+// Refinement in two lanes (core/src/refinement_lanes.h): the mesh is the same,
+// bit for bit, with 1, 2 and 3 threads, most cell centres go in through the
+// lanes, and the refined mesh keeps the rules the sequential refinement keeps.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <set>
+#include <vector>
+
+#include "rdmesh/mesher.h"
+#include "test_domains.h"
+
+namespace rdmesh {
+namespace {
+
+bool same_bits(const std::vector<Point3>& a, const std::vector<Point3>& b) {
+  return a.size() == b.size() &&
+         (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(Point3)) == 0);
+}
+
+MeshResult refine_with(int threads, double size) {
+  MeshOptions options;
+  options.threads = threads;
+  options.exudation.enabled = false;  // refinement alone
+  options.improvement.enabled = false;
+  return generate_mesh(test::unit_sphere(), test::uniform_criteria(size), options);
+}
+
+double signed_volume(const TetMesh& m, const std::array<int, 4>& t) {
+  const Point3 a = m.vertices[t[0]], b = m.vertices[t[1]], c = m.vertices[t[2]],
+               d = m.vertices[t[3]];
+  return dot(cross(b - a, c - a), d - a) / 6.0;
+}
+
+TEST(RefinementLanes, TheMeshIsTheSameOnAnyNumberOfThreads) {
+  const MeshResult one = refine_with(1, 0.085);
+  const RefinementStats& s = one.stats;
+  // The lanes did a good part of R5 (at this small size the coarse start,
+  // kept sequential, is half of it), and not all of it: both paths ran.
+  ASSERT_GT(s.lane_rounds, 0u);
+  // Some round needed its pools topped up: the lanes stopped and went on.
+  EXPECT_GT(s.lane_steps, s.lane_rounds);
+  EXPECT_GT(s.cell_centers_in_lanes, s.inserted_cell_centers / 3);
+  EXPECT_LT(s.cell_centers_in_lanes, s.inserted_cell_centers);
+  for (const int threads : {2, 3}) {
+    SCOPED_TRACE(testing::Message() << threads << " threads");
+    const MeshResult other = refine_with(threads, 0.085);
+    EXPECT_TRUE(same_bits(one.mesh.vertices, other.mesh.vertices)) << "vertex coordinates differ";
+    EXPECT_EQ(one.mesh.tets, other.mesh.tets);
+    EXPECT_EQ(one.mesh.triangles, other.mesh.triangles);
+    EXPECT_EQ(s.cell_centers_in_lanes, other.stats.cell_centers_in_lanes);
+    EXPECT_EQ(s.lane_rounds, other.stats.lane_rounds);
+    EXPECT_EQ(s.lane_steps, other.stats.lane_steps);
+    EXPECT_EQ(s.inserted_facet_centers, other.stats.inserted_facet_centers);
+  }
+}
+
+TEST(RefinementLanes, TheLanesMeshIsAValidSphere) {
+  const MeshResult r = refine_with(2, 0.085);
+  const TetMesh& m = r.mesh;
+  ASSERT_GT(m.tets.size(), 10000u);
+  // Positively oriented tets filling the ball's volume (inscribed: a bit less).
+  double volume = 0;
+  for (const auto& t : m.tets) {
+    const double v = signed_volume(m, t);
+    ASSERT_GT(v, 0.0);
+    volume += v;
+  }
+  const double ball = 4.0 / 3.0 * M_PI;
+  EXPECT_NEAR(volume, ball, 0.02 * ball);
+  // A closed boundary of sphere topology: every edge in two triangles, V - E + F = 2.
+  std::map<std::pair<int, int>, int> edges;
+  std::set<int> boundary_vertices;
+  for (const auto& t : m.triangles) {
+    for (int k = 0; k < 3; ++k) {
+      const int a = t[k], b = t[(k + 1) % 3];
+      ++edges[{std::min(a, b), std::max(a, b)}];
+      boundary_vertices.insert(a);
+      ASSERT_NEAR(norm(m.vertices[a]), 1.0, 1e-6);  // on the exact surface
+    }
+  }
+  for (const auto& [edge, count] : edges) ASSERT_EQ(count, 2);
+  EXPECT_EQ(static_cast<long>(boundary_vertices.size()) - static_cast<long>(edges.size()) +
+                static_cast<long>(m.triangles.size()),
+            2);
+  // R5: every tet's circumradius within the cell size (the criterion refined to).
+  for (const auto& t : m.tets) {
+    const Point3 a = m.vertices[t[0]];
+    const Point3 b = m.vertices[t[1]] - a, c = m.vertices[t[2]] - a, d = m.vertices[t[3]] - a;
+    const Point3 num = squared_norm(b) * cross(c, d) + squared_norm(c) * cross(d, b) +
+                       squared_norm(d) * cross(b, c);
+    const double radius = norm(num) / (2.0 * dot(b, cross(c, d)));
+    ASSERT_LE(radius, 0.085 * (1 + 1e-9));
+  }
+}
+
+}  // namespace
+}  // namespace rdmesh
