@@ -32,8 +32,6 @@ constexpr double kCoarse = 16.0;
 constexpr std::uint32_t kStampsPerInsertion = 32;
 /// Slack for the insertions that create more than the averages above.
 constexpr std::size_t kSlack = 2048;
-
-double coordinate(const Point3& p, int axis) { return axis == 0 ? p.x : axis == 1 ? p.y : p.z; }
 }  // namespace
 
 struct RefinementLanes::Lane {
@@ -86,12 +84,7 @@ void RefinementLanes::start() {
   std::vector<double> values;
   for (auto v = tr_.finite_vertices_begin(); v != tr_.finite_vertices_end(); ++v)
     values.push_back(coordinate(to_point3(v->point()), axis_));
-  split_ = 0;
-  if (!values.empty()) {
-    const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-    std::nth_element(values.begin(), middle, values.end());
-    split_ = *middle;
-  }
+  split_ = median(values);
   assign_lanes_at(tr_, axis_, split_);
   double lo = split_, hi = split_;
   for (const double x : values) {
@@ -111,7 +104,7 @@ bool RefinementLanes::pending() const {
 }
 
 bool RefinementLanes::round(RefinementStats& stats, const Deadline& deadline) {
-  ++stats_.rounds;
+  ++rounds_;
   ++stats.lane_rounds;
   // 1. A new cut through the middle of the queued cells' centres.
   std::vector<ElementEntry> entries;
@@ -123,16 +116,12 @@ bool RefinementLanes::round(RefinementStats& stats, const Deadline& deadline) {
       if (complex_.is_live(e.stamp)) entries.push_back(e);
     }
   }
-  axis_ = axes_[stats_.rounds % 2];
+  axis_ = axes_[rounds_ % 2];
   std::vector<double> values;
   values.reserve(entries.size());
   for (const ElementEntry& e : entries)
     values.push_back(coordinate(e.cell->info().circumcenter, axis_));
-  if (!values.empty()) {
-    const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-    std::nth_element(values.begin(), middle, values.end());
-    split_ = *middle;
-  }
+  split_ = median(values);
   assign_lanes_at(tr_, axis_, split_);
   // Oldest first, so that each queue's newest entries come out first, as before.
   for (auto e = entries.rbegin(); e != entries.rend(); ++e) {
@@ -186,14 +175,12 @@ bool RefinementLanes::round(RefinementStats& stats, const Deadline& deadline) {
     if (late || !again) break;
   }
 
-  // 4. What they did, lane by lane.
+  // 3. What they did, lane by lane.
   bool out_of_time = false;
   for (int l = 0; l < 2; ++l) {
     Lane& lane = *lanes[l];
     stats.inserted_cell_centers += lane.inserted;
     stats.cell_centers_in_lanes += lane.inserted;
-    stats_.inserted += lane.inserted;
-    stats_.deferred += lane.deferred.size();
     for (const ElementEntry& e : lane.deferred)
       if (complex_.is_live(e.stamp)) cells_.push(e);
     for (const ElementEntry& e : lane.crossed)
@@ -255,9 +242,8 @@ RefinementLanes::Outcome RefinementLanes::refine(Lane& lane, const ElementEntry&
   // A ball across the cut: its zone nearly always crosses too, and finding
   // that out costs a walk. The next round's cut is across another axis.
   const double to_cut = coordinate(center, axis_) - split_;
-  if (to_cut * to_cut < kBallReach * kBallReach * c->info().squared_radius) {
+  if (to_cut * to_cut < kBallReach * kBallReach * c->info().squared_radius)
     return Outcome::kCrossed;
-  }
   const Weighted_point p = to_weighted(center);
   const Vertex_handle infinite = tr_.infinite_vertex();
   // The lane's own cells without features: the curve level has nothing to see
@@ -265,27 +251,19 @@ RefinementLanes::Outcome RefinementLanes::refine(Lane& lane, const ElementEntry&
   // cells are a lane's when the infinite vertex holds every lane, see
   // assign_lanes_at: then its cell() is one that neither lane owns.)
   auto owned = [&](Cell_handle x) {
-    if (!in_lane(x, lane.id)) {
-      return false;
-    }
+    if (!in_lane(x, lane.id)) return false;
     for (int k = 0; k < 4; ++k) {
       const Vertex_handle w = x->vertex(k);
-      if (w->info().dim() <= FeatureDim::kCurve || w->point().weight() != 0) {
-        return false;
-      }
+      if (w->info().dim() <= FeatureDim::kCurve || w->point().weight() != 0) return false;
     }
     return true;
   };
-  if (!lane.walk.zone_if(tr_, p, c, lane.zone, lane.boundary, owned)) {
-    return Outcome::kCrossed;
-  }
+  if (!lane.walk.zone_if(tr_, p, c, lane.zone, lane.boundary, owned)) return Outcome::kCrossed;
   if (lane.zone.empty()) return Outcome::kDeferred;
   // refine-tet-facet-or-edge: an encroached facet is refined first (sequentially).
   Cell_handle fc;
   int fi = -1;
-  if (facets_.encroached(center, lane.zone, fc, fi)) {
-    return Outcome::kDeferred;
-  }
+  if (facets_.encroached(center, lane.zone, fc, fi)) return Outcome::kDeferred;
   // The minimum-size guard: the sequential steps refuse and record it.
   for (const Cell_handle& z : lane.zone) {
     for (int k = 0; k < 4; ++k) {

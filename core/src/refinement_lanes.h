@@ -36,13 +36,6 @@
 
 namespace rdmesh::detail {
 
-/// What the lanes did over a run (RefinementStats gets the insertions).
-struct LaneRoundStats {
-  std::size_t rounds = 0;
-  std::size_t inserted = 0;  ///< cell centres inserted by the lanes
-  std::size_t deferred = 0;  ///< entries a lane left to the sequential steps
-};
-
 class RefinementLanes {
  public:
   /// All must outlive the lanes. `min_size`: Insertion's guard. `threads`:
@@ -63,8 +56,6 @@ class RefinementLanes {
   /// then both lanes refine. Stops early at `deadline` (true then).
   bool round(RefinementStats& stats, const Deadline& deadline);
 
-  const LaneRoundStats& stats() const { return stats_; }
-
  private:
   struct Lane;
   /// Refines lane `lane`'s queue until it empties, its pools run low or its
@@ -84,7 +75,7 @@ class RefinementLanes {
   std::array<int, 3> axes_{0, 1, 2};
   int axis_ = 0;
   double split_ = 0;
-  LaneRoundStats stats_;
+  std::size_t rounds_ = 0;
   std::vector<ElementEntry> crossed_;  ///< entries whose zone crossed the last cut
 };
 

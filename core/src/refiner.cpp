@@ -132,9 +132,7 @@ void Refiner::refine(bool stop_on_conflict) {
       const bool late = lanes_.round(stats_, deadline_);
       if (options_.progress) report_progress();
       if (late || deadline_.passed(1)) {
-        stats_.time_limit_reached = true;
-        stats_.stopped_in = MeshingPhase::refinement;
-        stats_.elements_left = scheduler_.queued();
+        stop_at_time_limit();
         break;
       }
       continue;
@@ -142,14 +140,18 @@ void Refiner::refine(bool stop_on_conflict) {
     if (step != RefinementScheduler::Step::kRefined) break;
     if (options_.progress && ++insertions_since_progress_ >= kProgressEvery) report_progress();
     if (deadline_.passed(Deadline::kCheckEvery)) {
-      stats_.time_limit_reached = true;
-      stats_.stopped_in = MeshingPhase::refinement;
-      stats_.elements_left = scheduler_.queued();
+      stop_at_time_limit();
       break;
     }
   }
   if (options_.progress) report_progress();
   cells_.release_if_empty();
+}
+
+void Refiner::stop_at_time_limit() {
+  stats_.time_limit_reached = true;
+  stats_.stopped_in = MeshingPhase::refinement;
+  stats_.elements_left = scheduler_.queued();
 }
 
 void Refiner::zone_found(const std::vector<Cell_handle>& zone) { curve_level_->zone_found(zone); }

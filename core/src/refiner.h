@@ -71,6 +71,8 @@ class Refiner final : private InsertionObserver {
   Triangulation& triangulation() { return complex_.triangulation(); }
 
  private:
+  /// Records that refinement stopped at the deadline, with what is still queued.
+  void stop_at_time_limit();
   struct PatchPoints {
     std::size_t offered = 0;   ///< initial points of the patches
     std::size_t kept_out = 0;  ///< those the curve level kept out

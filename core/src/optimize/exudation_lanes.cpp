@@ -8,8 +8,7 @@ namespace rdmesh::detail {
 namespace {
 
 double coordinate(Vertex_handle v, int axis) {
-  const Weighted_point& p = v->point();
-  return axis == 0 ? p.x() : axis == 1 ? p.y() : p.z();
+  return detail::coordinate(to_point3(v->point()), axis);
 }
 
 }  // namespace
@@ -18,13 +17,14 @@ void assign_lanes(Triangulation& tr, const std::vector<Vertex_handle>& work, int
   std::vector<double> values;
   values.reserve(work.size());
   for (const Vertex_handle& v : work) values.push_back(coordinate(v, axis));
-  double split = 0;
-  if (!values.empty()) {
-    const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-    std::nth_element(values.begin(), middle, values.end());
-    split = *middle;
-  }
-  assign_lanes_at(tr, axis, split);
+  assign_lanes_at(tr, axis, median(values));
+}
+
+double median(std::vector<double>& values) {
+  if (values.empty()) return 0;
+  const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+  std::nth_element(values.begin(), middle, values.end());
+  return *middle;
 }
 
 void assign_lanes_at(Triangulation& tr, int axis, double split) {

@@ -44,11 +44,17 @@ inline bool in_lane(Cell_handle c, int lane) {
 void assign_lanes(Triangulation& tr, const std::vector<Vertex_handle>& work, int axis);
 /// The same cut at `split` on `axis`: lane 0 below, 1 at or above.
 void assign_lanes_at(Triangulation& tr, int axis, double split);
+/// A point's coordinate along `axis` (0: x, 1: y, 2: z).
+inline double coordinate(const Point3& p, int axis) {
+  return axis == 0 ? p.x : axis == 1 ? p.y : p.z;
+}
 /// The lane bit of a point for the cut at `split` on `axis`.
 inline std::uint8_t lane_bit_at(const Point3& p, int axis, double split) {
-  const double x = axis == 0 ? p.x : axis == 1 ? p.y : p.z;
-  return lane_bit(x < split ? 0 : 1);
+  return lane_bit(coordinate(p, axis) < split ? 0 : 1);
 }
+/// The median of `values` (the upper one of an even count; 0 when empty),
+/// where a cut goes. Reorders them.
+double median(std::vector<double>& values);
 
 /// The three axes by decreasing extent of the triangulation's finite vertices.
 std::array<int, 3> axes_by_extent(const Triangulation& tr);
