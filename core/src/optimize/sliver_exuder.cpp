@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -49,40 +50,75 @@ void validate(const ExudationOptions& o) {
 /// How many cells ahead domain_cosines() prefetches vertices.
 constexpr std::size_t kVertexLookahead = 8;
 
+/// Lowers `slot` to `value` if it is smaller; threads may race on one slot
+/// (the result is their minimum whatever the order).
+inline void lower_to(double& slot, double value) {
+  std::atomic_ref<double> a(slot);
+  double current = a.load(std::memory_order_relaxed);
+  while (value < current && !a.compare_exchange_weak(current, value, std::memory_order_relaxed)) {
+  }
+}
+
+/// Raises `slot` to `value` if it is larger (as lower_to).
+inline void raise_to(double& slot, double value) {
+  std::atomic_ref<double> a(slot);
+  double current = a.load(std::memory_order_relaxed);
+  while (value > current && !a.compare_exchange_weak(current, value, std::memory_order_relaxed)) {
+  }
+}
+
 /// The finite cells in iteration order and the cosine of each domain cell
-/// (-infinity for the others). `store`: computed on `threads` threads and
-/// stored on every cell as its shape_cosine (the infinite cells' too), which
-/// the exuder's first call does; later calls read the stored shapes (whoever
-/// creates a cell stores its shape; self_check verifies them all at the end).
-void domain_cosines(Triangulation& tr, int threads, bool store, std::vector<Cell_handle>& cells,
-                    std::vector<double>& cosines) {
+/// (-infinity for the others); returns the largest stamp of all cells.
+/// `store`: computed on `threads` threads and stored on every cell as its
+/// shape_cosine (the infinite cells' too), which the exuder's first call
+/// does; later calls read the stored shapes (whoever creates a cell stores its
+/// shape; self_check verifies them all at the end).
+std::uint32_t domain_cosines(Triangulation& tr, int threads, bool store,
+                             std::vector<Cell_handle>& cells, std::vector<double>& cosines) {
   cells.clear();
   cells.reserve(tr.number_of_finite_cells());
-  for (auto c = tr.finite_cells_begin(); c != tr.finite_cells_end(); ++c) cells.push_back(c);
-  cosines.resize(cells.size());
-  if (!store) {
-    for (std::size_t i = 0; i < cells.size(); ++i) cosines[i] = cells[i]->info().shape_cosine;
-    return;
+  std::uint32_t max_stamp = 0;
+  for (auto c = tr.all_cells_begin(); c != tr.all_cells_end(); ++c) {
+    max_stamp = std::max(max_stamp, c->info().stamp);
+    if (!tr.is_infinite(c))
+      cells.push_back(c);
+    else if (store)
+      c->info().shape_cosine = -std::numeric_limits<double>::infinity();
   }
+  cosines.resize(cells.size());
   parallel_for(cells.size(), threads, [&](std::size_t i) {
+    if (!store) {
+      cosines[i] = cells[i]->info().shape_cosine;
+      return;
+    }
     // The vertices lie all over memory: ask for those of a cell a few ahead.
     if (i + kVertexLookahead < cells.size())
       for (int k = 0; k < 4; ++k) __builtin_prefetch(&*cells[i + kVertexLookahead]->vertex(k));
     cosines[i] = stored_shape(tr, cells[i]);
     cells[i]->info().shape_cosine = cosines[i];
   });
-  for (auto c = tr.all_cells_begin(); c != tr.all_cells_end(); ++c)
-    if (tr.is_infinite(c)) c->info().shape_cosine = -std::numeric_limits<double>::infinity();
+  return max_stamp;
 }
 
-/// Minimum dihedral angle and histogram over the cells of D|O (`cosines` from domain_cosines).
-void measure(const std::vector<double>& cosines, double& min_deg, DihedralHistogram& histogram) {
+/// Minimum dihedral angle and histogram over the cells of D|O (`cosines` from
+/// domain_cosines), summed from chunks on `threads` threads.
+void measure(const std::vector<double>& cosines, int threads, double& min_deg,
+             DihedralHistogram& histogram) {
+  constexpr double kOutside = -std::numeric_limits<double>::infinity();
+  std::vector<DihedralHistogram> parts(chunk_count(cosines.size()), DihedralHistogram{});
+  std::vector<double> worsts(parts.size(), kOutside);
+  for_chunks(cosines.size(), threads, [&](std::size_t k, std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      if (cosines[i] == kOutside) continue;
+      worsts[k] = std::max(worsts[k], cosines[i]);
+      add_to_histogram(parts[k], cosine_to_degrees(cosines[i]));
+    }
+  });
   histogram.fill(0);
-  double worst = -std::numeric_limits<double>::infinity();
-  for (const double cosine : cosines) {
-    if (cosine == -std::numeric_limits<double>::infinity()) continue;
-    worst = std::max(worst, cosine);
-    add_to_histogram(histogram, cosine_to_degrees(cosine));
+  double worst = kOutside;
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    worst = std::max(worst, worsts[k]);
+    for (std::size_t b = 0; b < histogram.size(); ++b) histogram[b] += parts[k][b];
   }
   min_deg = std::isfinite(worst) ? cosine_to_degrees(worst) : 0.0;
 }
@@ -144,10 +180,11 @@ class Exuder {
     clock_.restart();
     ExudationStats stats;
     stats.ran = true;
-    std::uint32_t next_stamp = prepare();
-    // One pass over the cells gives the figures before, the first queue and the stored shapes.
-    domain_cosines(tr_, threads_, /*store=*/true, cells_, cosines_);
-    measure(cosines_, stats.min_dihedral_before_deg, stats.histogram_before);
+    // One pass over the cells gives the figures before, the first queue, the stored shapes
+    // and the first free stamp.
+    std::uint32_t next_stamp = domain_cosines(tr_, threads_, /*store=*/true, cells_, cosines_) + 1;
+    prepare();
+    measure(cosines_, threads_, stats.min_dihedral_before_deg, stats.histogram_before);
     next_stamp = pump_passes(stats, next_stamp, /*cosines_fresh=*/true);
     if (options_.perturb && !stats.time_limit_reached) {
       // Slivers the weights could not remove: move their volume vertices, then pump again.
@@ -174,15 +211,15 @@ class Exuder {
       stats.time_limit_reached = whole.time_limit_reached;
       DihedralHistogram histogram;
       domain_cosines(tr_, threads_, /*store=*/false, cells_, cosines_);
-      measure(cosines_, stats.min_dihedral_after_perturb_deg, histogram);
+      measure(cosines_, threads_, stats.min_dihedral_after_perturb_deg, histogram);
       stats.perturb_seconds = elapsed() - t;
       if (!stats.time_limit_reached) {
-        prepare();  // nearest neighbours moved
+        prepare();  // nearest neighbours moved (cells_ is fresh)
         pump_passes(stats, perturber.next_stamp(), /*cosines_fresh=*/false);
       }
     }
     domain_cosines(tr_, threads_, /*store=*/false, cells_, cosines_);
-    measure(cosines_, stats.min_dihedral_after_deg, stats.histogram_after);
+    measure(cosines_, threads_, stats.min_dihedral_after_deg, stats.histogram_after);
     cells_ = {};
     cosines_ = {};
     stats.seconds = elapsed();
@@ -356,11 +393,8 @@ class Exuder {
     return std::sqrt(d2);
   }
 
-  /// Vertex ids, nearest-neighbour distances, the first queue; returns the next free stamp.
-  std::uint32_t prepare() {
-    std::uint32_t max_stamp = 0;
-    for (auto c = tr_.all_cells_begin(); c != tr_.all_cells_end(); ++c)
-      max_stamp = std::max(max_stamp, c->info().stamp);
+  /// Vertex ids and nearest-neighbour distances (cells_ must hold the finite cells).
+  void prepare() {
     int n = 0;
     for (auto v = tr_.finite_vertices_begin(); v != tr_.finite_vertices_end(); ++v)
       v->info().index = n++;
@@ -368,21 +402,20 @@ class Exuder {
     moves_.assign(static_cast<std::size_t>(n), 0);
     // Over the six edges of every finite cell: each edge is seen from each of
     // its cells, which costs less than CGAL's edge iterator (it walks the
-    // cells around every edge to report it once).
-    for (auto c = tr_.finite_cells_begin(); c != tr_.finite_cells_end(); ++c) {
+    // cells around every edge to report it once). Threads lower the same
+    // vertex's distance: the minimum does not depend on their order.
+    parallel_for(cells_.size(), threads_, [&](std::size_t i) {
+      const Cell_handle c = cells_[i];
       Point3 p[4];
       for (int k = 0; k < 4; ++k) p[k] = to_point3(c->vertex(k)->point());
-      for (int i = 0; i < 3; ++i) {
-        for (int j = i + 1; j < 4; ++j) {
-          const double d2 = squared_norm(p[i] - p[j]);
-          double& ni = nearest_sq_[c->vertex(i)->info().index];
-          double& nj = nearest_sq_[c->vertex(j)->info().index];
-          ni = std::min(ni, d2);
-          nj = std::min(nj, d2);
+      for (int a = 0; a < 3; ++a) {
+        for (int b = a + 1; b < 4; ++b) {
+          const double d2 = squared_norm(p[a] - p[b]);
+          lower_to(nearest_sq_[c->vertex(a)->info().index], d2);
+          lower_to(nearest_sq_[c->vertex(b)->info().index], d2);
         }
       }
-    }
-    return max_stamp + 1;
+    });
   }
 
   /// The vertices incident to a domain cell below the current bound, each
@@ -393,14 +426,11 @@ class Exuder {
     const std::size_t n = moves_.size();
     dirty_.assign(n, 1);
     std::vector<double> worst(n, -std::numeric_limits<double>::infinity());
-    for (std::size_t i = 0; i < cells_.size(); ++i) {
+    parallel_for(cells_.size(), threads_, [&](std::size_t i) {
       const double cosine = cosines_[i];
-      if (!(cosine > bound_cosine_)) continue;
-      for (int k = 0; k < 4; ++k) {
-        double& w = worst[cells_[i]->vertex(k)->info().index];
-        w = std::max(w, cosine);
-      }
-    }
+      if (!(cosine > bound_cosine_)) return;
+      for (int k = 0; k < 4; ++k) raise_to(worst[cells_[i]->vertex(k)->info().index], cosine);
+    });
     std::vector<QueuedVertex> queued;
     for (auto v = tr_.finite_vertices_begin(); v != tr_.finite_vertices_end(); ++v) {
       const double w = worst[v->info().index];
