@@ -227,8 +227,9 @@ MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& given,
   }
   if (improvement.enabled && !options.surface_only) {
     announce(options, "improving the tetrahedra");
-    result.improvement = improve_tets(result.mesh, improvement,
-                                      {&oracle, criteria.facet_distance, criteria.edge_size});
+    result.improvement =
+        improve_tets(result.mesh, improvement,
+                     {&oracle, criteria.facet_distance, criteria.edge_size, criteria.facet_size});
   }
   return result;
 }

@@ -13,7 +13,9 @@
 // every tetrahedron is positively oriented, each solid's volume moves by less
 // than the facet distance times the area of the moved triangles and passes the
 // fidelity check, the sampled distance of the boundary to the surface stays
-// within max(facet distance, what it was), and the result is the same twice.
+// within max(facet distance, what it was), every moved triangle on no feature
+// vertex keeps its circumradius within the facet size (R4.1) or what it was,
+// and the result is the same twice.
 // And the command with defaults on gmsh_part.step (a curve of 0.0008 in a mesh
 // of 0.03, below target without these moves).
 #include <gtest/gtest.h>
@@ -55,6 +57,7 @@ TEST_P(BoundaryMovesCad, RaiseTheSmallestAngleAndKeepTheModel) {
   const Criteria criteria = default_criteria(oracle->bounding_box());
   ASSERT_TRUE(criteria.facet_distance.is_uniform());
   ASSERT_TRUE(criteria.edge_size.is_uniform());
+  ASSERT_TRUE(criteria.facet_size.is_uniform());
   const double d = criteria.facet_distance.constant;
   MeshOptions options;
   options.improvement.enabled = false;
@@ -66,8 +69,9 @@ TEST_P(BoundaryMovesCad, RaiseTheSmallestAngleAndKeepTheModel) {
   const TetImprovementStats f =
       improve_tets(fixed, no_moves, {oracle.get(), criteria.facet_distance, criteria.edge_size});
   TetMesh moved = plain;
-  const TetImprovementStats s =
-      improve_tets(moved, {}, {oracle.get(), criteria.facet_distance, criteria.edge_size});
+  const BoundarySurface surface{oracle.get(), criteria.facet_distance, criteria.edge_size,
+                                criteria.facet_size};
+  const TetImprovementStats s = improve_tets(moved, {}, surface);
   std::printf(
       "%s: min dihedral %.2f -> %.2f (fixed boundary) / %.2f (%zu moves along patches, %zu along "
       "curves)\n",
@@ -134,6 +138,29 @@ TEST_P(BoundaryMovesCad, RaiseTheSmallestAngleAndKeepTheModel) {
           << v << "-" << w;
     }
   }
+  // R4.1: a slid triangle on no feature vertex has a circumradius within the
+  // facet size, or no larger than before the moves.
+  const std::set<int> on_features = [&] {
+    std::set<int> f(corners);
+    for (const auto& [v, c] : curves) f.insert(v);
+    return f;
+  }();
+  const auto circumradius = [](const Point3& a, const Point3& b, const Point3& c) {
+    return distance(a, b) * distance(b, c) * distance(c, a) / (2 * norm(cross(b - a, c - a)));
+  };
+  std::size_t sized = 0;
+  for (const auto& t : plain.triangles) {
+    if (!(slid.count(t[0]) || slid.count(t[1]) || slid.count(t[2]))) continue;
+    if (on_features.count(t[0]) || on_features.count(t[1]) || on_features.count(t[2])) continue;
+    const auto& p = moved.vertices;
+    const auto& p0 = plain.vertices;
+    const double r = circumradius(p[t[0]], p[t[1]], p[t[2]]);
+    const double r0 = circumradius(p0[t[0]], p0[t[1]], p0[t[2]]);
+    EXPECT_LE(r, std::max(criteria.facet_size.constant, r0) * (1 + 1e-9))
+        << t[0] << " " << t[1] << " " << t[2];
+    ++sized;
+  }
+  EXPECT_GT(sized, 0u);
   EXPECT_GT(slid.size(), on_curves);
   EXPECT_GT(on_curves, 0u);
   EXPECT_LE(slid.size(), s.boundary_moves + s.curve_moves);
@@ -163,7 +190,7 @@ TEST_P(BoundaryMovesCad, RaiseTheSmallestAngleAndKeepTheModel) {
             std::max(d, q_plain.boundary_max_distance) + oracle->tolerance());
 
   TetMesh again = plain;
-  (void)improve_tets(again, {}, {oracle.get(), criteria.facet_distance, criteria.edge_size});
+  (void)improve_tets(again, {}, surface);
   EXPECT_EQ(again.vertices, moved.vertices);
   EXPECT_EQ(again.tets, moved.tets);
 }

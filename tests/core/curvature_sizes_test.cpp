@@ -83,6 +83,34 @@ TEST(CurvatureSizes, MeshHasAtLeastNEdgesPerTurnAndCoarseCaps) {
   EXPECT_LT(2 * mesh.tets.size(), uniform.tets.size());
 }
 
+// The whole pipeline on samples/torus.json (minor radius 0.3, its largest
+// curvature everywhere): refinement leaves every boundary edge within
+// 2 pi R / N, and neither the exudation nor the final improvement's slides
+// along the surface lengthen one past it (without the size check, slides left
+// two edges over at N = 12 and at N = 20, up to 1.07 times it at N = 40).
+TEST(CurvatureSizes, TheWholePipelineKeepsTheFacetSizes) {
+  const ImplicitOracle o({{-1.5, -1.5, -0.5}, {1.5, 1.5, 0.5}}, {[](const Point3& p) {
+                           const double q = std::sqrt(p.x * p.x + p.y * p.y) - 1.0;
+                           return q * q + p.z * p.z - 0.09;
+                         }});
+  for (const int per_turn : {12, 20}) {
+    SCOPED_TRACE(testing::Message() << per_turn << " per turn");
+    Criteria c = test::uniform_criteria(0.3);  // as `rdmesh torus.json --size 0.3 --curvature N`
+    c.facet_distance = 0.005;
+    c.min_size = 1e-4 * o.bounding_box().diagonal();
+    SizeRequests asked;
+    asked.curvature = per_turn;
+    (void)apply_sizes(o, asked, c);
+    const MeshResult r = generate_mesh(o, c);
+    EXPECT_GT(r.improvement.boundary_moves, 0u);
+    const CurvatureAchieved got =
+        achieved_curvature(r.mesh, o, per_turn, c.min_size_for(o.bounding_box()));
+    ASSERT_GT(got.facets, 1000u);
+    EXPECT_EQ(got.facets_over, 0u);
+    EXPECT_LE(got.facet_max_ratio, 1.0);
+  }
+}
+
 TEST(CurvatureSizes, SizingObjectErrorsNameTheKey) {
   const test::CappedCylinderOracle o(0.5, 0.6);
   for (const char* bad : {R"({"curvature": 0})", R"({"grade": 1})", R"({"face:1": -1})",

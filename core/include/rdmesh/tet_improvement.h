@@ -15,7 +15,8 @@
 // slide along that patch (the oracle's projection), and a vertex between two
 // feature edges of one curve (not a corner) along that curve (its exact
 // points); the triangles around it keep their normals within 20 degrees of
-// the input's and stay within the facet distance of their patches, its
+// the input's and stay within the facet distance and the facet size of their
+// patches, its
 // feature edges within the facet distance of the curve, so the regions change
 // only within what the facet distance allows. Every tetrahedron stays
 // positively oriented by CGAL's exact orientation predicate. The result
@@ -33,14 +34,17 @@
 namespace rdmesh {
 
 /// The exact surface the mesh's triangles follow: the oracle it was made from,
-/// the criteria's facet distance, and their edge size (R2: half a feature edge
+/// the criteria's facet distance, their edge size (R2: half a feature edge
 /// <= edge_size at its midpoint; a vertex sliding along a curve never makes a
-/// feature edge break it, or longer if it already did; default: no bound).
-/// Without an oracle no boundary vertex moves.
+/// feature edge break it, or longer if it already did; default: no bound) and
+/// their facet size (R4.1: a vertex sliding along a patch never makes a
+/// triangle's circumradius exceed facet_size at its circumcentre, or grow if
+/// it already did; default: no bound). Without an oracle no boundary vertex moves.
 struct BoundarySurface {
   const DomainOracle* oracle = nullptr;
   ScalarField facet_distance;
   ScalarField edge_size = ScalarField::uniform(std::numeric_limits<double>::infinity());
+  ScalarField facet_size = ScalarField::uniform(std::numeric_limits<double>::infinity());
 };
 
 /// Improves `mesh` in place (a first-order, unpartitioned mesh with positively

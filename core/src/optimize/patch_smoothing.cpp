@@ -22,10 +22,12 @@ Point3 area_normal(const std::array<Point3, 3>& q) { return cross(q[1] - q[0], q
 }  // namespace
 
 PatchSurface::PatchSurface(const TetMesh& mesh, const DomainOracle& oracle,
-                           const ScalarField& facet_distance, const ScalarField& edge_size)
+                           const ScalarField& facet_distance, const ScalarField& edge_size,
+                           const ScalarField& facet_size)
     : oracle_(oracle),
       facet_distance_(facet_distance),
       edge_size_(edge_size),
+      facet_size_(facet_size),
       triangles_(mesh.triangles),
       patch_(mesh.vertices.size(), 0),
       feature_(mesh.vertices.size(), 0),
@@ -116,14 +118,18 @@ bool PatchSurface::near_surface(const TetTopology& topo, int v, const Point3& p)
     for (const Point3& s : samples) {
       if (!(gap(s) <= facet_distance_(s))) return false;
     }
-    // The circumcentre, where R4 bounds the distance (on no feature vertex):
-    // within the facet distance, or no farther than before the move.
+    // The circumcentre, where R4 bounds the distance and the size (on no
+    // feature vertex): within the facet distance, or no farther than before
+    // the move; a circumradius within the facet size, or no larger than before.
     const auto& t = triangles_[f];
     if (feature_[t[0]] || feature_[t[1]] || feature_[t[2]]) continue;
+    const auto q0 = corners_with(topo, triangles_[f], v, topo.point(v));
     const Point3 c = triangle_circumcenter(q[0], q[1], q[2]);
     if (const double dc = gap(c); !(dc <= facet_distance_(c))) {
-      const auto q0 = corners_with(topo, triangles_[f], v, topo.point(v));
       if (!(dc <= gap(triangle_circumcenter(q0[0], q0[1], q0[2])))) return false;
+    }
+    if (const double r = distance(c, q[0]); !(r <= facet_size_(c))) {
+      if (!(r <= distance(triangle_circumcenter(q0[0], q0[1], q0[2]), q0[0]))) return false;
     }
   }
   return true;

@@ -15,7 +15,11 @@
 //     vertex stay within the facet distance of the patch (the projection's
 //     distance), and, on a triangle with no vertex on a feature edge or
 //     corner (where R4 bounds it), its circumcentre too, or no farther than
-//     before, so the boundary follows the surface as the criteria ask.
+//     before, and its circumradius stays within the facet size at its
+//     circumcentre (R4.1 bounds the surface ball, which is no smaller), or no
+//     larger than before, so the boundary follows the surface and keeps the
+//     sizes the criteria ask (a slide once made a torus's boundary edges 12%
+//     longer than its curvature sizes).
 // The climb checks the normals at every step and the distances (9 to 24
 // projections) once, at the last position that keeps them.
 // The triangles, their patches and the feature edges keep their vertices; the
@@ -41,7 +45,7 @@ inline constexpr double kMaxNormalTurnDeg = 20;
 class PatchSurface {
  public:
   PatchSurface(const TetMesh& mesh, const DomainOracle& oracle, const ScalarField& facet_distance,
-               const ScalarField& edge_size);
+               const ScalarField& edge_size, const ScalarField& facet_size);
 
   /// The patch (id) of vertex v when it lies on triangles of exactly one patch
   /// and on no feature edge or corner; 0 otherwise.
@@ -68,13 +72,15 @@ class PatchSurface {
   /// True when v's triangles, with v at p, have their centroids and the
   /// midpoints of their edges at v within the facet distance of their patch, and
   /// (for those on no feature vertex, where R4 bounds it) their circumcentres
-  /// within it or no farther from it than before the move.
+  /// within it or no farther from it than before the move, and their
+  /// circumradii within the facet size or no larger than before.
   bool near_surface(const TetTopology& topo, int v, const Point3& p) const;
 
  private:
   const DomainOracle& oracle_;
   const ScalarField& facet_distance_;
   const ScalarField& edge_size_;
+  const ScalarField& facet_size_;
   std::vector<std::array<int, 3>> triangles_;
   std::vector<Point3> normal0_;  ///< unit normal of each triangle in the input
   std::vector<int> triangle_patch_;

@@ -90,7 +90,8 @@ TetImprovementStats improve_tets(TetMesh& mesh, const TetImprovementOptions& opt
   std::optional<detail::PatchSurface> patches;
   std::vector<double> curve_parameters;  // of the vertices inside chains, found once
   if (surface.oracle && options.boundary_moves) {
-    patches.emplace(mesh, *surface.oracle, surface.facet_distance, surface.edge_size);
+    patches.emplace(mesh, *surface.oracle, surface.facet_distance, surface.edge_size,
+                    surface.facet_size);
   }
   {
     // The tets' qualities before are the topology's: mesh.tets in order.
