@@ -18,7 +18,12 @@ TEST(ConeHole, RaisingAWeightInPlaceGivesTheRegularTriangulationWithOrWithoutAPo
   std::mt19937 rng(17);
   std::uniform_real_distribution<double> u(0, 1);
   std::vector<Weighted_point> points;
-  for (int i = 0; i < 200; ++i) points.emplace_back(Kernel::Point_3(u(rng), u(rng), u(rng)), 0.0);
+  for (int i = 0; i < 200; ++i) {
+    // z, y, x: the same points with any compiler (GCC's order of the arguments
+    // in the call this was; the order of a call's arguments is unspecified).
+    const double z = u(rng), y = u(rng), x = u(rng);
+    points.emplace_back(Kernel::Point_3(x, y, z), 0.0);
+  }
   Triangulation tr(points.begin(), points.end());
   ASSERT_EQ(tr.number_of_vertices(), points.size());
 

@@ -16,8 +16,10 @@ namespace {
 
 Weighted_point random_point(std::mt19937& rng, double max_weight) {
   std::uniform_real_distribution<double> coordinate(-1.0, 1.0), weight(0.0, max_weight);
-  return Weighted_point(Kernel::Point_3(coordinate(rng), coordinate(rng), coordinate(rng)),
-                        weight(rng));
+  // Drawn in this order whatever the compiler (the order in which a call's
+  // arguments are evaluated is unspecified: GCC's, right to left, here).
+  const double w = weight(rng), z = coordinate(rng), y = coordinate(rng), x = coordinate(rng);
+  return Weighted_point(Kernel::Point_3(x, y, z), w);
 }
 
 /// A regular triangulation of 3000 random points with small random weights.
