@@ -91,9 +91,13 @@ TEST_P(SharedStep, NearestCrossingMatchesOpenCascade) {
   if (!oracle) RDMESH_MISSING_SHARED_DATA("step/ files");
   CadReference ref(*oracle);
   const double tol = oracle->tolerance();
+  // Within the tolerance of the trimmed face: the projection's foot inside it,
+  // or else BRepExtrema's distance to the face (also where the projection
+  // fails: on occt_screw.step, built with clang, it found no foot for a point
+  // 1.2e-6 from its face).
   const auto on_its_face = [&](const CadOracle::Crossing& c) {
     const CadReference::Foot f = ref.foot(c.point, c.patch);
-    return f.distance <= tol && (f.in_face || ref.distance_to_face(c.point, c.patch) <= tol);
+    return (f.distance <= tol && f.in_face) || ref.distance_to_face(c.point, c.patch) <= tol;
   };
   const auto list = segments(*oracle, 1500, 7);
   int same = 0, edge = 0, loose = 0, missed = 0, they_missed = 0, other = 0, crossings = 0;
@@ -107,7 +111,13 @@ TEST_P(SharedStep, NearestCrossingMatchesOpenCascade) {
       EXPECT_LE(distance(mine->point, a + t * d), tol) << "crossing off the segment";
       EXPECT_GE(t, -tol);
       EXPECT_LE(t, distance(a, b) + tol);
-      EXPECT_TRUE(on_its_face(*mine)) << "crossing off patch " << mine->patch.value;
+      EXPECT_TRUE(on_its_face(*mine))
+          << "crossing off patch " << mine->patch.value << " at (" << mine->point.x << ", "
+          << mine->point.y << ", " << mine->point.z << "): foot distance "
+          << ref.foot(mine->point, mine->patch).distance << ", in face "
+          << ref.foot(mine->point, mine->patch).in_face << ", distance to the face "
+          << ref.distance_to_face(mine->point, mine->patch) << ", tolerance " << tol << "; segment "
+          << a.x << " " << a.y << " " << a.z << " to " << b.x << " " << b.y << " " << b.z;
     }
     const bool nearer = theirs && (!mine || theirs->distance < mine->distance);
     if ((!mine && !theirs) || (mine && theirs && mine->patch == theirs->patch &&
