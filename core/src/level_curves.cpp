@@ -35,7 +35,7 @@ const std::vector<BallRef>& CurveLevel::conflicts() const {
 
 CurveRefinementLevel::CurveRefinementLevel(RestrictedCurves& curves, RestrictedComplex& complex,
                                            const Criteria& criteria)
-    : curves_(curves), complex_(complex), tr_(complex.triangulation()), criteria_(criteria) {}
+    : curves_(curves), tr_(complex.triangulation()), criteria_(criteria) {}
 
 void CurveRefinementLevel::insert_initial_points(Deadline& deadline, RefinementStats& stats) {
   (void)deadline;  // a handful of points per curve

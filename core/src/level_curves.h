@@ -138,7 +138,6 @@ class CurveRefinementLevel final : public CurveLevel {
   std::optional<std::pair<int, CurveState::Arc>> encroached_arc(const Point3& x);
 
   RestrictedCurves& curves_;
-  RestrictedComplex& complex_;
   Triangulation& tr_;
   const Criteria& criteria_;
   std::uint64_t next_order_ = 0;

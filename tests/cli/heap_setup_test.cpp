@@ -45,8 +45,9 @@ std::uintptr_t advised_bytes(std::uintptr_t lo, std::uintptr_t hi) {
   return total;
 }
 
-// Whether this kernel takes the advice at all (THP compiled in).
-bool kernel_takes_advice() {
+// Whether this kernel takes the advice at all (THP compiled in). Unused
+// under a sanitizer, whose allocator the heap setup leaves alone.
+[[maybe_unused]] bool kernel_takes_advice() {
   void* p = mmap(nullptr, 4 << 20, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
   if (p == MAP_FAILED) return false;
   const bool ok = madvise(p, 4 << 20, MADV_HUGEPAGE) == 0;
@@ -80,7 +81,7 @@ TEST(HeapSetup, TheHeapIsAdvisedForHugePagesAsItGrows) {
 }
 
 // Pages of [lo, hi) (page-aligned) that are resident (mincore).
-std::size_t resident_pages(std::uintptr_t lo, std::uintptr_t hi) {
+[[maybe_unused]] std::size_t resident_pages(std::uintptr_t lo, std::uintptr_t hi) {
   const std::size_t page = static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
   std::vector<unsigned char> in((hi - lo) / page);
   if (mincore(reinterpret_cast<void*>(lo), hi - lo, in.data()) != 0) return 0;
