@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages rdmesh needs to build, test and benchmark.
 # Runs apt-get only for what is missing; uses sudo when not root.
-# --fuzz: also what scripts/fuzz.sh needs; --format: what scripts/check-format.sh needs.
+# --fuzz: also what scripts/fuzz.sh needs; --sanitize: what scripts/test.sh --sanitize
+# needs (clang); --format: what scripts/check-format.sh needs.
 set -euo pipefail
 packages=(
   build-essential cmake ccache pkg-config git
@@ -23,9 +24,10 @@ packages=(
   libocct-data-exchange-dev libocct-ocaf-dev libocct-visualization-dev libtbb-dev
   libfontconfig-dev
 )
-if [ "${1:-}" = "--fuzz" ]; then
-  # Fuzzing only (scripts/fuzz.sh): clang 14 and its compiler runtime, which
-  # ships libFuzzer (libclang_rt.fuzzer-x86_64.a) and the sanitizer runtimes.
+if [ "${1:-}" = "--fuzz" ] || [ "${1:-}" = "--sanitize" ]; then
+  # Fuzzing and the sanitizer build (scripts/fuzz.sh, scripts/test.sh --sanitize):
+  # clang 14 and its compiler runtime, which ships libFuzzer
+  # (libclang_rt.fuzzer-x86_64.a) and the sanitizer runtimes.
   packages+=(clang libclang-rt-14-dev)
 fi
 if [ "${1:-}" = "--format" ]; then
