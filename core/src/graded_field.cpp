@@ -90,16 +90,20 @@ double GradedField::below(const Point3& p, double bound) const {
 ScalarField lowered(const ScalarField& base, std::shared_ptr<const GradedField> near,
                     std::shared_ptr<const std::vector<std::pair<int, double>>> inside,
                     const DomainOracle* oracle) {
-  return ScalarField{0.0, [base, near, inside, oracle](const Point3& p) {
-                       double h = near->below(p, base(p));
-                       if (inside && !inside->empty()) {
-                         const int label = oracle->locate(p).label.value;
-                         for (const auto& [id, size] : *inside) {
-                           if (id == label) h = std::min(h, size);
-                         }
-                       }
-                       return h;
-                     }};
+  // Read-only data and the oracle's queries (thread-safe where the refinement
+  // calls it from several threads: MeshOptions::oracle_concurrent).
+  return ScalarField::composed(
+      [base, near, inside, oracle](const Point3& p) {
+        double h = near->below(p, base(p));
+        if (inside && !inside->empty()) {
+          const int label = oracle->locate(p).label.value;
+          for (const auto& [id, size] : *inside) {
+            if (id == label) h = std::min(h, size);
+          }
+        }
+        return h;
+      },
+      {&base});
 }
 
 TetMesh sampling_surface(const DomainOracle& oracle, const Criteria& criteria) {

@@ -76,7 +76,7 @@ RefinementLanes::RefinementLanes(RestrictedComplex& complex, CellLevel& cells, F
       facets_(facets),
       curves_(curves),
       min_size_sq_(min_size * min_size),
-      threads_(criteria.cell_size.field ? 1 : threads) {}
+      threads_(criteria.cell_size.is_concurrent() ? threads : 1) {}
 
 void RefinementLanes::start() {
   axes_ = axes_by_extent(tr_);
@@ -106,6 +106,7 @@ bool RefinementLanes::pending() const {
 bool RefinementLanes::round(RefinementStats& stats, const Deadline& deadline) {
   ++rounds_;
   ++stats.lane_rounds;
+  stats.lane_threads = std::min(resolve_threads(threads_), 2);
   // 1. A new cut through the middle of the queued cells' centres.
   std::vector<ElementEntry> entries;
   entries.swap(crossed_);

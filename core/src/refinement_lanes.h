@@ -39,8 +39,8 @@ namespace rdmesh::detail {
 class RefinementLanes {
  public:
   /// All must outlive the lanes. `min_size`: Insertion's guard. `threads`:
-  /// MeshOptions::threads (the lanes run on one thread when the cell size
-  /// varies: its field need not be thread-safe).
+  /// MeshOptions::threads (the lanes run on one thread when the cell size's
+  /// field may not be called from several threads: ScalarField::is_concurrent).
   RefinementLanes(RestrictedComplex& complex, CellLevel& cells, FacetLevel& facets,
                   const CurveLevel& curves, const Criteria& criteria, double min_size, int threads);
 

@@ -410,7 +410,7 @@ class Parser {
            number_text(at_center) + " at the box center (" + number_text(center.x) + ", " +
            number_text(center.y) + ", " + number_text(center.z) + "); it must be positive");
     }
-    return ScalarField{0.0, *e};
+    return ScalarField{0.0, *e, /*thread_safe=*/true};  // one muparser object per thread
   }
 
   CriteriaHints parse_hints(const Json& doc, Point3 center) const {

@@ -136,10 +136,11 @@ void follow_solid_thickness(const CadOracle& cad, Criteria& criteria, std::vecto
   auto limit = std::make_shared<const ThicknessLimit>(box, 0.25 * h, thin);
   const double floor = 2 * criteria.min_size_for(box);
   const ScalarField d = criteria.facet_distance;
-  criteria.facet_distance =
-      ScalarField{0.0, [limit, d, floor](const Point3& p) {
-                    return std::min(d(p), std::max(floor, kDistancePerSize * (*limit)(p)));
-                  }};
+  criteria.facet_distance = ScalarField::composed(
+      [limit, d, floor](const Point3& p) {
+        return std::min(d(p), std::max(floor, kDistancePerSize * (*limit)(p)));
+      },
+      {&d});
 }
 
 }  // namespace
@@ -157,7 +158,8 @@ int follow_thickness(const CadOracle& cad, Criteria& criteria, FollowedDefaults 
   if (!thin.empty()) {
     auto limit = std::make_shared<const ThicknessLimit>(box, 0.25 * h, thin);
     auto limited = [limit](const ScalarField& f) {
-      return ScalarField{0.0, [limit, f](const Point3& p) { return std::min(f(p), (*limit)(p)); }};
+      return ScalarField::composed(
+          [limit, f](const Point3& p) { return std::min(f(p), (*limit)(p)); }, {&f});
     };
     criteria.facet_size = limited(criteria.facet_size);
     criteria.cell_size = limited(criteria.cell_size);

@@ -409,6 +409,7 @@ nlohmann::json report_json(const Options& opt, const Criteria& criteria, const D
                      {"cell_centers_in_lanes", stats.cell_centers_in_lanes},
                      {"lane_rounds", stats.lane_rounds},
                      {"lane_steps", stats.lane_steps},
+                     {"lane_threads", stats.lane_threads},
                      {"encroachments", stats.encroachments},
                      {"time_limit_reached", stats.time_limit_reached},
                      {"elements_left", stats.elements_left}};

@@ -74,11 +74,17 @@ void expect_same_for_thread_counts(const std::string& input, const std::string& 
                       << b.size() << ")";
   EXPECT_GT(r1.at("optimization").at("min_dihedral_after_deg").get<double>(),
             r1.at("exudation").at("min_dihedral_before_deg").get<double>());
+  // The refinement lanes ran on the threads asked for: the sizes a run derives
+  // (a CAD part's thickness limits, gradings) may be called from two threads.
+  ASSERT_GT(r1.at("refinement").at("lane_rounds").get<int>(), 0);
+  EXPECT_EQ(r1.at("refinement").at("lane_threads").get<int>(), 1);
+  EXPECT_EQ(r2.at("refinement").at("lane_threads").get<int>(), 2);
   for (nlohmann::json* r : {&r1, &r2}) {
     drop_timings(*r);
     r->erase("command_line");
     r->erase("output");
     r->at("criteria").erase("threads");
+    r->at("refinement").erase("lane_threads");
   }
   EXPECT_EQ(r1.dump(1), r2.dump(1));
 }
@@ -89,6 +95,13 @@ TEST(CliThreads, ImplicitSphereSameBytesForOneAndTwoThreads) {
 
 TEST(CliThreads, SharedStepSameBytesForOneAndTwoThreads) {
   RDMESH_REQUIRE_SHARED_DATA(part, "step/gmsh_Zylkopf.stp");
+  expect_same_for_thread_counts(part, "");
+}
+
+TEST(CliThreads, SharedStepWithThinPartsSameBytesForOneAndTwoThreads) {
+  // Its faces' thickness lowers the cell size below the default in places
+  // (cad_sizes.cpp): a varying cell size the lanes evaluate on two threads.
+  RDMESH_REQUIRE_SHARED_DATA(part, "step/gmsh_wrenchnut.stp");
   expect_same_for_thread_counts(part, "");
 }
 

@@ -38,6 +38,10 @@ TEST(EntitySizes, GradedFromTheEntityAndBaseFarAway) {
   const test::CappedCylinderOracle o(0.5, 0.6);
   Criteria c = test::uniform_criteria(0.2);
   apply_entity_sizes(o, {parse_entity_size("face:1=0.02", o)}, 1.5, c);
+  // Graded over read-only data: the refinement may call them from two threads.
+  EXPECT_TRUE(c.cell_size.is_concurrent());
+  EXPECT_TRUE(c.facet_size.is_concurrent());
+  EXPECT_TRUE(c.edge_size.is_concurrent());
   // On the side (radius 0.5): the asked size, up to the facets' sag.
   for (double t : {0.1, 1.7, 4.0}) {
     const Point3 on{0.5 * std::cos(t), 0.5 * std::sin(t), 0.2};

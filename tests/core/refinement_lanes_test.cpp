@@ -3,6 +3,7 @@
 // lanes, and the refined mesh keeps the rules the sequential refinement keeps.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -56,6 +57,56 @@ TEST(RefinementLanes, TheMeshIsTheSameOnAnyNumberOfThreads) {
     EXPECT_EQ(s.lane_steps, other.stats.lane_steps);
     EXPECT_EQ(s.inserted_facet_centers, other.stats.inserted_facet_centers);
   }
+}
+
+/// The unit sphere refined to a cell size growing from 0.06 at x = -1 to 0.12
+/// at x = 1, on `threads` threads; `thread_safe`: the field says it may be
+/// called from several threads at once.
+MeshResult refine_graded(int threads, bool thread_safe) {
+  Criteria criteria = test::uniform_criteria(0.12);
+  criteria.cell_size =
+      ScalarField{0.0, [](const Point3& p) { return 0.09 + 0.03 * p.x; }, thread_safe};
+  MeshOptions options;
+  options.threads = threads;
+  options.exudation.enabled = false;
+  options.improvement.enabled = false;
+  return generate_mesh(test::unit_sphere(), criteria, options);
+}
+
+TEST(RefinementLanes, AThreadSafeCellSizeFieldRunsOnTwoThreadsWithTheSameMesh) {
+  const MeshResult one = refine_graded(1, true);
+  ASSERT_GT(one.stats.cell_centers_in_lanes, one.stats.inserted_cell_centers / 3);
+  EXPECT_EQ(one.stats.lane_threads, 1);
+  const MeshResult two = refine_graded(2, true);
+  EXPECT_EQ(two.stats.lane_threads, 2);
+  // A field that does not say so keeps the lanes on one thread, whatever the
+  // threads asked for: it may be a callable that is not thread-safe.
+  const MeshResult guarded = refine_graded(2, false);
+  EXPECT_EQ(guarded.stats.lane_threads, 1);
+  for (const MeshResult* other : {&two, &guarded}) {
+    EXPECT_TRUE(same_bits(one.mesh.vertices, other->mesh.vertices)) << "vertex coordinates differ";
+    EXPECT_EQ(one.mesh.tets, other->mesh.tets);
+    EXPECT_EQ(one.mesh.triangles, other->mesh.triangles);
+    EXPECT_EQ(one.stats.cell_centers_in_lanes, other->stats.cell_centers_in_lanes);
+  }
+}
+
+TEST(RefinementLanes, FieldsComposedOfThreadSafeFieldsAreThreadSafe) {
+  const ScalarField safe{0.0, [](const Point3& p) { return 1 + p.x * p.x; }, true};
+  const ScalarField unknown{0.0, [](const Point3& p) { return 1 + p.y * p.y; }};
+  const ScalarField constant = ScalarField::uniform(0.5);
+  EXPECT_TRUE(constant.is_concurrent());
+  EXPECT_TRUE(safe.is_concurrent());
+  EXPECT_FALSE(unknown.is_concurrent());
+  const auto min_of = [](const ScalarField& a, const ScalarField& b) {
+    return ScalarField::composed([a, b](const Point3& p) { return std::min(a(p), b(p)); },
+                                 {&a, &b});
+  };
+  const ScalarField both_safe = min_of(safe, constant), mixed = min_of(safe, unknown);
+  EXPECT_TRUE(both_safe.is_concurrent());
+  EXPECT_FALSE(mixed.is_concurrent());
+  EXPECT_DOUBLE_EQ(both_safe(Point3{0.5, 0, 0}), 0.5);
+  EXPECT_DOUBLE_EQ(mixed(Point3{0.5, 2, 0}), 1.25);
 }
 
 TEST(RefinementLanes, TheLanesMeshIsAValidSphere) {

@@ -81,6 +81,9 @@ TEST(DomainFile, MinimalFileAndHints) {
   ASSERT_TRUE(d.hints.size && d.hints.size->is_uniform());
   EXPECT_EQ(d.hints.size->constant, 0.2);
   EXPECT_NEAR((*d.hints.facet_size)({0.3, 0.1, 0}), 0.1, 1e-15);
+  // An expression keeps one parser per thread: it may be evaluated from several.
+  EXPECT_FALSE(d.hints.facet_size->is_uniform());
+  EXPECT_TRUE(d.hints.facet_size->is_concurrent());
   EXPECT_EQ(d.hints.cell_size->constant, 0.3);
   EXPECT_EQ(d.hints.facet_distance, 0.01);
   EXPECT_FALSE(d.hints.facet_angle.has_value());

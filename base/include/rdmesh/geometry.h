@@ -104,15 +104,30 @@ inline constexpr SubdomainId kOutside{0};
 struct ScalarField {
   double constant = 0.0;                       ///< used when `field` is empty
   std::function<double(const Point3&)> field;  ///< optional spatially varying value
+  /// Whether `field` may be called from several threads at once. A field built
+  /// from an arbitrary function is not (the refinement then evaluates it on one
+  /// thread); rdmesh's own fields (expressions, gradings, thickness limits) are,
+  /// and keep it through composition: see `composed`.
+  bool concurrent = false;
 
   ScalarField() = default;
   /// A constant field (implicit: a number is a uniform field).
   ScalarField(double value) : constant(value) {}  // NOLINT(google-explicit-constructor)
-  ScalarField(double value, std::function<double(const Point3&)> f)
-      : constant(value), field(std::move(f)) {}
+  ScalarField(double value, std::function<double(const Point3&)> f, bool thread_safe = false)
+      : constant(value), field(std::move(f)), concurrent(thread_safe) {}
 
   static ScalarField uniform(double v) { return ScalarField{v, {}}; }
+  /// A field of `f`, callable from several threads at once when every field in
+  /// `parts` is: for a field computed from other fields and read-only data.
+  static ScalarField composed(std::function<double(const Point3&)> f,
+                              std::initializer_list<const ScalarField*> parts) {
+    bool thread_safe = true;
+    for (const ScalarField* part : parts) thread_safe = thread_safe && part->is_concurrent();
+    return ScalarField{0.0, std::move(f), thread_safe};
+  }
   bool is_uniform() const { return !field; }
+  /// True when the field may be evaluated from several threads at once.
+  bool is_concurrent() const { return !field || concurrent; }
   double operator()(const Point3& p) const { return field ? field(p) : constant; }
 };
 

@@ -93,6 +93,10 @@ struct RefinementStats {
   std::size_t cell_centers_in_lanes = 0;
   std::size_t lane_rounds = 0;
   std::size_t lane_steps = 0;  ///< steps of those rounds (the lanes' pools topped up before each)
+  /// Threads the lanes ran on (0: no round). One when MeshOptions::threads is,
+  /// or when the oracle or the cell size may not be called from several threads
+  /// at once (MeshOptions::oracle_concurrent, ScalarField::is_concurrent).
+  int lane_threads = 0;
   std::size_t guard_rejections = 0;  ///< refinement points refused by the minimum-size guard
   bool guard_fired() const { return guard_rejections > 0; }
   /// The features involved in guard rejections, e.g. "curve 2 near patch 3"
