@@ -11,10 +11,6 @@ cd "$(dirname "$0")/.."
 jobs=${RDMESH_JOBS:-2}
 if [ "${1:-}" = "--sanitize" ]; then
   bash scripts/install-deps.sh --sanitize
-else
-  bash scripts/install-deps.sh
-fi
-if [ "${1:-}" = "--sanitize" ]; then
   # libfreeimage (pulled in by OpenCASCADE's XCAF and visualization toolkits,
   # which the STEP names and colours need) frees at exit with free() what it
   # allocated with new: not ours, and it aborts every test executable, also at
@@ -24,6 +20,7 @@ if [ "${1:-}" = "--sanitize" ]; then
     -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++
   ctest --test-dir build-asan --output-on-failure -j "$jobs"
 else
+  bash scripts/install-deps.sh
   bash scripts/build.sh
   ctest --test-dir build --output-on-failure -j "$jobs"
 fi
