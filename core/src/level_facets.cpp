@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "level_curves.h"
+#include "optimize/exudation_lanes.h"
 #include "rdmesh/debug_assert.h"
 #include "simplex_geometry.h"
 
@@ -61,7 +62,22 @@ Violation FacetLevel::violation(Cell_handle c, int i) const {
 
 void FacetLevel::consider(Cell_handle c, int i) {
   const Violation v = violation(c, i);
-  if (v) queue_.push({v.priority, c, c->info().stamp, i});
+  if (!v) return;
+  const ElementEntry e{v.priority, c, c->info().stamp, i};
+  const int lane = lane_of(c, i);
+  if (lane >= 0) return lanes_[lane].push(e);
+  queue_.push(e);
+}
+
+int FacetLevel::lane_of(Cell_handle c, int i) const {
+  if (!lanes_on_) return -1;
+  const Point3 center = c->info().surface_center[i];
+  if (!(complex_.facet_power(c, i, center) < lane_max_squared_radius_)) return -1;
+  const Cell_handle n = c->neighbor(i);
+  for (int lane = 0; lane < 2; ++lane) {
+    if (in_lane(c, lane) && in_lane(n, lane)) return lane;
+  }
+  return -1;
 }
 
 std::optional<ElementEntry> FacetLevel::pop() {

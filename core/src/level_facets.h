@@ -35,8 +35,27 @@ class FacetLevel {
   /// Queues facet (c, i) when it violates a rule.
   void consider(Cell_handle c, int i);
 
+  /// The level's own queue (the sequential steps') is empty.
   bool empty() const { return queue_.empty(); }
-  std::size_t size() const { return queue_.size(); }
+  /// Every queued entry, the lanes' too.
+  std::size_t size() const { return queue_.size() + lanes_[0].size() + lanes_[1].size(); }
+
+  /// Refinement lanes (refinement_lanes.h): while on, consider() sends a
+  /// facet whose two cells lie in lane k to lane k's queue, unless its surface
+  /// ball has a squared radius of `max_squared_radius` or more (its centre's
+  /// zone reaches across the cut).
+  void set_lanes(bool on, double max_squared_radius) {
+    lanes_on_ = on;
+    lane_max_squared_radius_ = max_squared_radius;
+  }
+  using Queue = std::priority_queue<ElementEntry>;
+  Queue& lane_queue(int lane) { return lanes_[lane]; }
+  const Queue& lane_queue(int lane) const { return lanes_[lane]; }
+  /// Queues an entry for the sequential steps (one a lane could not refine).
+  void push(const ElementEntry& e) { queue_.push(e); }
+  /// The lane whose queue takes facet (c, i) (both cells in it, a small
+  /// surface ball); -1: the sequential steps, or lanes off.
+  int lane_of(Cell_handle c, int i) const;
   /// Pops the worst entry: the facet, if it still exists and still violates a
   /// rule; else nullopt (the entry was stale).
   std::optional<ElementEntry> pop();
@@ -57,7 +76,10 @@ class FacetLevel {
   const RestrictedComplex& complex_;
   const Criteria& criteria_;
   double shape_bound_;  ///< 4 sin^2(facet angle): min edge^2 / R^2 below it is bad
-  std::priority_queue<ElementEntry> queue_;
+  Queue queue_;
+  Queue lanes_[2];
+  bool lanes_on_ = false;
+  double lane_max_squared_radius_ = 0;
 };
 
 }  // namespace rdmesh::detail

@@ -14,15 +14,31 @@ namespace {
 constexpr std::size_t kMaxQuota = 1 << 17;
 constexpr std::size_t kMinQuota = 1 << 12;
 /// A lane's pools hold the cells, vertices and stamps of as many insertions
-/// as a sixteenth of the cells it has queued (it inserts about one for six),
+/// as a sixteenth of the elements it has queued (it inserts about one for six),
 /// within these bounds.
 constexpr std::size_t kQueuedPerStep = 16;
 constexpr std::size_t kMinStep = 1 << 6;
 constexpr std::size_t kMaxStep = 1 << 12;
 /// Pool cells per insertion: a cone has about 6.5 cells more than its zone.
 constexpr std::size_t kCellsPerInsertion = 7;
-/// An entry whose zone crossed the cut once (ElementEntry::facet, -1 for cells).
+/// An entry whose zone crossed the cut once: ElementEntry::facet is -1 for
+/// cells, this for a cell that crossed once; a facet's index plus kFacetCrossed.
 constexpr int kCrossedOnce = -2;
+constexpr int kFacetCrossed = 4;
+bool is_facet(const ElementEntry& e) { return e.facet >= 0; }
+int facet_index(const ElementEntry& e) { return e.facet & 3; }
+bool crossed_once(const ElementEntry& e) {
+  return e.facet == kCrossedOnce || e.facet >= kFacetCrossed;
+}
+ElementEntry as_crossed(ElementEntry e) {
+  e.facet = is_facet(e) ? facet_index(e) + kFacetCrossed : kCrossedOnce;
+  return e;
+}
+/// The entry as the levels know it (no crossing mark).
+ElementEntry plain(ElementEntry e) {
+  e.facet = is_facet(e) ? facet_index(e) : -1;
+  return e;
+}
 /// A conflict zone seldom reaches further from the centre than this many radii.
 constexpr double kBallReach = 3.0;
 /// Cells with a radius above the domain's extent over this stay sequential:
@@ -58,7 +74,8 @@ struct RefinementLanes::Lane {
   std::size_t step_end = 0;            ///< `inserted` at which the step ends
   std::vector<ElementEntry> deferred;  ///< for the sequential steps
   std::vector<ElementEntry> crossed;   ///< zones across the cut, for the next round
-  std::vector<FoundFacet> facets;      ///< facets it found in D|S, for the facet level
+  std::vector<FoundFacet> facets;      ///< facets of D|S it leaves to the facet level
+  std::size_t inserted_facets = 0;     ///< of `inserted`, facet centres
   // Scratch.
   ConflictWalk walk;
   ConeBuilder cone;
@@ -76,7 +93,10 @@ RefinementLanes::RefinementLanes(RestrictedComplex& complex, CellLevel& cells, F
       facets_(facets),
       curves_(curves),
       min_size_sq_(min_size * min_size),
-      threads_(criteria.cell_size.is_concurrent() ? threads : 1) {}
+      threads_(criteria.cell_size.is_concurrent() && criteria.facet_size.is_concurrent() &&
+                       criteria.facet_distance.is_concurrent()
+                   ? threads
+                   : 1) {}
 
 void RefinementLanes::start() {
   axes_ = axes_by_extent(tr_);
@@ -93,6 +113,7 @@ void RefinementLanes::start() {
   }
   const double reach = (hi - lo) / kCoarse;
   cells_.set_lanes(true, reach * reach);
+  facets_.set_lanes(true, reach * reach);
 }
 
 void RefinementLanes::place(Vertex_handle v) const {
@@ -100,14 +121,19 @@ void RefinementLanes::place(Vertex_handle v) const {
 }
 
 bool RefinementLanes::pending() const {
-  return !cells_.lane_queue(0).empty() || !cells_.lane_queue(1).empty() || !crossed_.empty();
+  return !cells_.lane_queue(0).empty() || !cells_.lane_queue(1).empty() ||
+         !facets_.lane_queue(0).empty() || !facets_.lane_queue(1).empty() || !crossed_.empty();
+}
+
+Point3 RefinementLanes::centre_of(const ElementEntry& e) {
+  return is_facet(e) ? e.cell->info().surface_center[facet_index(e)] : e.cell->info().circumcenter;
 }
 
 bool RefinementLanes::round(RefinementStats& stats, const Deadline& deadline) {
   ++rounds_;
   ++stats.lane_rounds;
   stats.lane_threads = std::min(resolve_threads(threads_), 2);
-  // 1. A new cut through the middle of the queued cells' centres.
+  // 1. A new cut through the middle of the queued facets' and cells' centres.
   std::vector<ElementEntry> entries;
   entries.swap(crossed_);
   for (int l = 0; l < 2; ++l) {
@@ -116,25 +142,36 @@ bool RefinementLanes::round(RefinementStats& stats, const Deadline& deadline) {
       const ElementEntry e = q.pop();
       if (complex_.is_live(e.stamp)) entries.push_back(e);
     }
+    FacetLevel::Queue& f = facets_.lane_queue(l);
+    while (!f.empty()) {
+      const ElementEntry e = f.top();
+      f.pop();
+      if (complex_.is_live(e.stamp)) entries.push_back(e);
+    }
   }
   axis_ = axes_[rounds_ % 2];
   std::vector<double> values;
   values.reserve(entries.size());
-  for (const ElementEntry& e : entries)
-    values.push_back(coordinate(e.cell->info().circumcenter, axis_));
+  for (const ElementEntry& e : entries) values.push_back(coordinate(centre_of(e), axis_));
   split_ = median(values);
   assign_lanes_at(tr_, axis_, split_);
   // Oldest first, so that each queue's newest entries come out first, as before.
   for (auto e = entries.rbegin(); e != entries.rend(); ++e) {
-    if (in_lane(e->cell, 0)) {
+    if (is_facet(*e)) {
+      const int l = facets_.lane_of(e->cell, facet_index(*e));
+      if (l >= 0)
+        facets_.lane_queue(l).push(*e);
+      else
+        facets_.push(plain(*e));
+    } else if (in_lane(e->cell, 0)) {
       cells_.lane_queue(0).push(CellLevel::bucket_of(e->priority), *e);
     } else if (in_lane(e->cell, 1)) {
       cells_.lane_queue(1).push(CellLevel::bucket_of(e->priority), *e);
     } else {
-      cells_.push(*e);
+      cells_.push(plain(*e));
     }
   }
-  if (cells_.lane_queue(0).empty() && cells_.lane_queue(1).empty()) return false;
+  if (!pending()) return false;
 
   // 2. Both lanes at once, in steps: before each, on this thread, each lane's
   // pools get the vertices, cells and stamps of another `step`
@@ -143,7 +180,7 @@ bool RefinementLanes::round(RefinementStats& stats, const Deadline& deadline) {
   std::unique_ptr<Lane> lanes[2];
   for (int l = 0; l < 2; ++l) {
     lanes[l] = std::make_unique<Lane>(tr_, l, deadline);
-    const std::size_t queued = cells_.lane_queue(l).size();
+    const std::size_t queued = facets_.lane_queue(l).size() + cells_.lane_queue(l).size();
     lanes[l]->quota = std::clamp(2 * queued, kMinQuota, kMaxQuota);
     lanes[l]->step = std::clamp(queued / kQueuedPerStep, kMinStep, kMaxStep);
   }
@@ -180,10 +217,17 @@ bool RefinementLanes::round(RefinementStats& stats, const Deadline& deadline) {
   bool out_of_time = false;
   for (int l = 0; l < 2; ++l) {
     Lane& lane = *lanes[l];
-    stats.inserted_cell_centers += lane.inserted;
-    stats.cell_centers_in_lanes += lane.inserted;
-    for (const ElementEntry& e : lane.deferred)
-      if (complex_.is_live(e.stamp)) cells_.push(e);
+    stats.inserted_cell_centers += lane.inserted - lane.inserted_facets;
+    stats.cell_centers_in_lanes += lane.inserted - lane.inserted_facets;
+    stats.inserted_facet_centers += lane.inserted_facets;
+    stats.facet_centers_in_lanes += lane.inserted_facets;
+    for (const ElementEntry& e : lane.deferred) {
+      if (!complex_.is_live(e.stamp)) continue;
+      if (is_facet(e))
+        facets_.push(plain(e));
+      else
+        cells_.push(plain(e));
+    }
     for (const ElementEntry& e : lane.crossed)
       if (complex_.is_live(e.stamp)) crossed_.push_back(e);
     for (const Lane::FoundFacet& f : lane.facets)
@@ -196,8 +240,9 @@ bool RefinementLanes::round(RefinementStats& stats, const Deadline& deadline) {
 }
 
 void RefinementLanes::run(Lane& lane) {
-  BucketQueue<ElementEntry>& queue = cells_.lane_queue(lane.id);
-  while (!queue.empty()) {
+  BucketQueue<ElementEntry>& cells = cells_.lane_queue(lane.id);
+  FacetLevel::Queue& facets = facets_.lane_queue(lane.id);
+  while (!facets.empty() || !cells.empty()) {
     if (lane.deadline.passed(Deadline::kCheckEvery)) {
       lane.out_of_time = true;
       return;
@@ -206,7 +251,14 @@ void RefinementLanes::run(Lane& lane) {
       lane.full = true;
       return;
     }
-    const ElementEntry e = queue.pop();
+    // The lane's facets first (R3, R4 before R5), as the sequential steps.
+    ElementEntry e;
+    if (!facets.empty()) {
+      e = facets.top();
+      facets.pop();
+    } else {
+      e = cells.pop();
+    }
     switch (refine(lane, e)) {
       case Outcome::kDeferred:
         lane.deferred.push_back(e);
@@ -214,16 +266,16 @@ void RefinementLanes::run(Lane& lane) {
       case Outcome::kCrossed:
         // The next round cuts across the other axis: most such zones are then
         // inside one lane. A second time, the sequential steps take it.
-        if (e.facet == kCrossedOnce) {
+        if (crossed_once(e))
           lane.deferred.push_back(e);
-        } else {
-          ElementEntry once = e;
-          once.facet = kCrossedOnce;
-          lane.crossed.push_back(once);
-        }
+        else
+          lane.crossed.push_back(as_crossed(e));
         break;
       case Outcome::kFull:
-        queue.push(CellLevel::bucket_of(e.priority), e);
+        if (is_facet(e))
+          facets.push(e);
+        else
+          cells.push(CellLevel::bucket_of(e.priority), e);
         lane.full = true;
         return;
       case Outcome::kInserted:
@@ -236,21 +288,46 @@ void RefinementLanes::run(Lane& lane) {
 RefinementLanes::Outcome RefinementLanes::refine(Lane& lane, const ElementEntry& e) {
   const Cell_handle c = e.cell;
   if (!complex_.is_live(e.stamp)) return Outcome::kDropped;
+  if (is_facet(e)) {
+    const int i = facet_index(e);
+    const Cell_handle n = c->neighbor(i);
+    if (!in_lane(c, lane.id) || !in_lane(n, lane.id)) return Outcome::kDeferred;
+    if (!facets_.violation(c, i)) return Outcome::kDropped;
+    const Point3 center = c->info().surface_center[i];
+    // The protecting balls' tests (CurveLevel::keeps_facet_centre) need the
+    // sequential steps; a facet without weighted vertices has a positive ball.
+    const double r2 = complex_.facet_power(c, i, center);
+    if (!(r2 > 0)) return Outcome::kDeferred;
+    // The centre lies on the facet's dual Voronoi edge: in the ball of one of
+    // its two cells.
+    const Weighted_point p = to_weighted(center);
+    const Cell_handle start =
+        tr_.side_of_power_sphere(c, p, /*perturb=*/true) == CGAL::ON_BOUNDED_SIDE ? c : n;
+    const VertexInfo info{FeatureRef(c->info().facet_patch[i]), 0, -1};
+    const Outcome done = insert(lane, center, r2, start, info);
+    if (done == Outcome::kInserted) ++lane.inserted_facets;
+    return done;
+  }
   if (!in_lane(c, lane.id)) return Outcome::kDeferred;
   if (!cells_.violation(c)) return Outcome::kDropped;
   if (curves_.keeps_cell_centre(c)) return Outcome::kDropped;
-  const Point3 center = c->info().circumcenter;
+  return insert(lane, c->info().circumcenter, c->info().squared_radius, c, VertexInfo{});
+}
+
+RefinementLanes::Outcome RefinementLanes::insert(Lane& lane, const Point3& center,
+                                                 double squared_radius, Cell_handle start,
+                                                 const VertexInfo& info) {
   // A ball across the cut: its zone nearly always crosses too, and finding
   // that out costs a walk. The next round's cut is across another axis.
   const double to_cut = coordinate(center, axis_) - split_;
-  if (to_cut * to_cut < kBallReach * kBallReach * c->info().squared_radius)
-    return Outcome::kCrossed;
+  if (to_cut * to_cut < kBallReach * kBallReach * squared_radius) return Outcome::kCrossed;
   const Weighted_point p = to_weighted(center);
   const Vertex_handle infinite = tr_.infinite_vertex();
   // The lane's own cells without features: the curve level has nothing to see
-  // in the zone, and nothing outside the lane is read or written. (Infinite
-  // cells are a lane's when the infinite vertex holds every lane, see
-  // assign_lanes_at: then its cell() is one that neither lane owns.)
+  // in the zone (no arc's ball holds a point whose zone has no curve vertex),
+  // and nothing outside the lane is read or written. (Infinite cells are a
+  // lane's when the infinite vertex holds every lane, see assign_lanes_at:
+  // then its cell() is one that neither lane owns.)
   auto owned = [&](Cell_handle x) {
     if (!in_lane(x, lane.id)) return false;
     for (int k = 0; k < 4; ++k) {
@@ -259,12 +336,14 @@ RefinementLanes::Outcome RefinementLanes::refine(Lane& lane, const ElementEntry&
     }
     return true;
   };
-  if (!lane.walk.zone_if(tr_, p, c, lane.zone, lane.boundary, owned)) return Outcome::kCrossed;
+  if (!lane.walk.zone_if(tr_, p, start, lane.zone, lane.boundary, owned)) return Outcome::kCrossed;
   if (lane.zone.empty()) return Outcome::kDeferred;
   // refine-tet-facet-or-edge: an encroached facet is refined first (sequentially).
-  Cell_handle fc;
-  int fi = -1;
-  if (facets_.encroached(center, lane.zone, fc, fi)) return Outcome::kDeferred;
+  if (info.dim() == FeatureDim::kVolume) {
+    Cell_handle fc;
+    int fi = -1;
+    if (facets_.encroached(center, lane.zone, fc, fi)) return Outcome::kDeferred;
+  }
   // The minimum-size guard: the sequential steps refuse and record it.
   for (const Cell_handle& z : lane.zone) {
     for (int k = 0; k < 4; ++k) {
@@ -284,21 +363,29 @@ RefinementLanes::Outcome RefinementLanes::refine(Lane& lane, const ElementEntry&
   const Vertex_handle v = lane.vertices.back();
   lane.vertices.pop_back();
   v->set_point(p);
-  v->info() = VertexInfo{};
+  v->info() = info;
   v->info().lane = lane_bit(lane.id);
   lane.hole.clear();
   for (const Triangulation::Facet& f : lane.boundary) lane.hole.push_back({f.first, f.second});
   lane.cone.build(tr_, lane.zone, lane.hole, v, &lane.pool, lane.created);
 
-  // As Refiner::inserted: labels, D|S around the star, the new bad cells.
+  // As Refiner::inserted: labels, D|S around the star, the new bad elements.
   const std::uint32_t first_new = lane.stamps.next;
   for (const Cell_handle& n : lane.created)
     complex_.init_cell_in_lane(n, n->neighbor(n->index(v)), lane.stamps);
+  FacetLevel::Queue& facets = facets_.lane_queue(lane.id);
   for (const Cell_handle& n : lane.created) {
     for (int i = 0; i < 4; ++i) {
       const std::uint32_t ns = n->neighbor(i)->info().stamp;
-      if ((ns < first_new || ns > n->info().stamp) && complex_.update_facet(n, i))
-        lane.facets.push_back({n, i, n->info().stamp});
+      if ((ns < first_new || ns > n->info().stamp) && complex_.update_facet(n, i)) {
+        // Both cells are the lane's (the zone's neighbours passed `owned`):
+        // a bad facet with a small ball stays in the lane.
+        const Violation bad = facets_.violation(n, i);
+        if (bad && facets_.lane_of(n, i) == lane.id)
+          facets.push({bad.priority, n, n->info().stamp, i});
+        else if (bad)
+          lane.facets.push_back({n, i, n->info().stamp});
+      }
     }
   }
   BucketQueue<ElementEntry>& queue = cells_.lane_queue(lane.id);

@@ -1,23 +1,27 @@
-// Private to core/: rule R5 on two threads, with a result that does not depend
-// on the threads (issue 19).
+// Private to core/: rules R3, R4 and R5 on two threads, with a result that
+// does not depend on the threads (issue 19).
 //
 // A plane cuts space in two lanes (optimize/exudation_lanes.h: every vertex
 // carries its lane's bit); a lane owns the cells whose vertices are all its
-// own, and the cell level queues each bad cell in the queue of the lane that
-// owns it (the others, on the cut, in its own queue for the sequential steps).
-// In a round, each lane refines the cells of its queue, worst first, on its own
-// thread: it inserts a cell's circumcentre when the conflict zone and every
-// cell next to it are its own, finite, and free of curve and corner vertices
-// and of protecting balls, when no restricted facet's ball holds the centre and
-// the minimum-size guard lets it in; anything else waits for the sequential
-// steps (the scheduler: arcs, facets, and the cells nobody owns). Lanes then
+// own. The cell level queues each bad cell in the queue of the lane that owns
+// it, the facet level each bad facet of D|S whose two cells a lane owns and
+// whose surface ball is small (the others, on the cut or in the coarse start,
+// in the levels' own queues for the sequential steps). In a round, each lane
+// refines its facets, then its cells, worst first, on its own thread: it
+// inserts the surface ball's centre or the circumcentre when the conflict zone
+// and every cell next to it are its own, finite, and free of curve and corner
+// vertices and of protecting balls (so no arc's ball holds the point), when,
+// for a cell, no restricted facet's ball holds the centre, and when the
+// minimum-size guard lets it in; anything else waits for the sequential steps
+// (the scheduler: arcs, and the facets and cells nobody owns). Lanes then
 // write only cells they own and read only those and their neighbours, which
 // the other lane never writes: a facet has three vertices, so a cell next to
 // one lane's cell is not the other's. Cells, vertices and stamps come from
-// per-lane pools topped up between the steps of a round; the facets a lane
-// finds in D|S and the cells it leaves are handed over after the round, lane
-// by lane. So each lane does exactly what it would do alone: one thread runs
-// the lanes one after the other and gets the same triangulation, to the byte.
+// per-lane pools topped up between the steps of a round; the bad facets a lane
+// finds that it may not refine, and the elements it leaves, are handed over
+// after the round, lane by lane. So each lane does exactly what it would do
+// alone: one thread runs the lanes one after the other and gets the same
+// triangulation, to the byte.
 #pragma once
 
 #include <array>
@@ -39,8 +43,9 @@ namespace rdmesh::detail {
 class RefinementLanes {
  public:
   /// All must outlive the lanes. `min_size`: Insertion's guard. `threads`:
-  /// MeshOptions::threads (the lanes run on one thread when the cell size's
-  /// field may not be called from several threads: ScalarField::is_concurrent).
+  /// MeshOptions::threads (the lanes run on one thread when the cell size,
+  /// the facet size or the facet distance may not be called from several
+  /// threads: ScalarField::is_concurrent).
   RefinementLanes(RestrictedComplex& complex, CellLevel& cells, FacetLevel& facets,
                   const CurveLevel& curves, const Criteria& criteria, double min_size, int threads);
 
@@ -52,7 +57,7 @@ class RefinementLanes {
   /// Whether a lane has cells queued.
   bool pending() const;
   /// One round: a new cut (alternating the two longest axes) through the
-  /// median of the queued cells' centres, the lanes' queues shared out again,
+  /// median of the queued facets' and cells' centres, the lanes' queues shared out again,
   /// then both lanes refine. Stops early at `deadline` (true then).
   bool round(RefinementStats& stats, const Deadline& deadline);
 
@@ -61,9 +66,15 @@ class RefinementLanes {
   /// Refines lane `lane`'s queue until it empties, its pools run low or its
   /// step ends (Lane::full then).
   void run(Lane& lane);
-  /// Inserts the circumcentre of the lane's cell `e.cell`, or says why not.
+  /// Inserts the centre of the lane's facet or cell `e`, or says why not.
   enum class Outcome { kInserted, kDropped, kDeferred, kCrossed, kFull };
   Outcome refine(Lane& lane, const ElementEntry& e);
+  /// Inserts `center` (labelled `info`), whose ball has `squared_radius`, when
+  /// its conflict zone, found from `start`, is the lane's.
+  Outcome insert(Lane& lane, const Point3& center, double squared_radius, Cell_handle start,
+                 const VertexInfo& info);
+  /// Where an entry's point goes: its surface ball's or Delaunay ball's centre.
+  static Point3 centre_of(const ElementEntry& e);
 
   RestrictedComplex& complex_;
   Triangulation& tr_;

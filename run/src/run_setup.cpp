@@ -111,8 +111,9 @@ void add_options(CLI::App& app, Options& opt) {
                "Keep the restricted Delaunay tetrahedra: no final flips and vertex moves "
                "against the worst dihedral angles");
   app.add_option("--threads", opt.threads,
-                 "Threads for the phases after refinement; the output is the same for any "
-                 "number (default 0: all cores)")
+                 "Threads for the refinement's surface and cell centres, exudation, "
+                 "improvement and the report; the output is the same for any number "
+                 "(default 0: all cores)")
       ->check(CLI::Range(0, 1024));
   app.add_option("--report", opt.report, "Write a JSON report of the run to this file");
   app.add_flag("-q,--quiet", opt.quiet, "No progress and no summary");
@@ -407,6 +408,7 @@ nlohmann::json report_json(const Options& opt, const Criteria& criteria, const D
                      {"facet_centers_inserted", stats.inserted_facet_centers},
                      {"cell_centers_inserted", stats.inserted_cell_centers},
                      {"cell_centers_in_lanes", stats.cell_centers_in_lanes},
+                     {"facet_centers_in_lanes", stats.facet_centers_in_lanes},
                      {"lane_rounds", stats.lane_rounds},
                      {"lane_steps", stats.lane_steps},
                      {"lane_threads", stats.lane_threads},

@@ -46,6 +46,9 @@ TEST(RefinementLanes, TheMeshIsTheSameOnAnyNumberOfThreads) {
   EXPECT_GT(s.lane_steps, s.lane_rounds);
   EXPECT_GT(s.cell_centers_in_lanes, s.inserted_cell_centers / 3);
   EXPECT_LT(s.cell_centers_in_lanes, s.inserted_cell_centers);
+  // Facets too (R3, R4), once the surface's balls are small: not the coarse start.
+  EXPECT_GT(s.facet_centers_in_lanes, s.inserted_facet_centers / 10);
+  EXPECT_LT(s.facet_centers_in_lanes, s.inserted_facet_centers);
   for (const int threads : {2, 3}) {
     SCOPED_TRACE(testing::Message() << threads << " threads");
     const MeshResult other = refine_with(threads, 0.085);
@@ -53,6 +56,7 @@ TEST(RefinementLanes, TheMeshIsTheSameOnAnyNumberOfThreads) {
     EXPECT_EQ(one.mesh.tets, other.mesh.tets);
     EXPECT_EQ(one.mesh.triangles, other.mesh.triangles);
     EXPECT_EQ(s.cell_centers_in_lanes, other.stats.cell_centers_in_lanes);
+    EXPECT_EQ(s.facet_centers_in_lanes, other.stats.facet_centers_in_lanes);
     EXPECT_EQ(s.lane_rounds, other.stats.lane_rounds);
     EXPECT_EQ(s.lane_steps, other.stats.lane_steps);
     EXPECT_EQ(s.inserted_facet_centers, other.stats.inserted_facet_centers);
@@ -137,6 +141,25 @@ TEST(RefinementLanes, TheLanesMeshIsAValidSphere) {
   EXPECT_EQ(static_cast<long>(boundary_vertices.size()) - static_cast<long>(edges.size()) +
                 static_cast<long>(m.triangles.size()),
             2);
+  // R4 on every boundary triangle, the lanes' ones too: its circumradius within
+  // the facet size (its surface ball is at least as large), its smallest angle
+  // at least 25 degrees, and its circumcentre within the facet distance of the
+  // sphere (the dual Voronoi edge of a triangle on the unit sphere goes
+  // through the origin, so that distance is 1 - |circumcentre|).
+  ASSERT_GT(r.stats.facet_centers_in_lanes, 0u);
+  for (const auto& t : m.triangles) {
+    const Point3 a = m.vertices[t[0]], b = m.vertices[t[1]], c = m.vertices[t[2]];
+    const Point3 ab = b - a, ac = c - a, n = cross(ab, ac);
+    const Point3 center = a + (1.0 / (2.0 * squared_norm(n))) * (squared_norm(ab) * cross(ac, n) +
+                                                                 squared_norm(ac) * cross(n, ab));
+    const double radius = norm(center - a);
+    EXPECT_LE(radius, 0.085 * (1 + 1e-9));
+    const double shortest =
+        std::sqrt(std::min({squared_norm(ab), squared_norm(ac), squared_norm(c - b)}));
+    // The smallest angle is opposite the shortest edge: sin = shortest / (2 R).
+    EXPECT_GE(shortest / (2 * radius), std::sin(25 * M_PI / 180) * (1 - 1e-9));
+    EXPECT_LE(1 - norm(center), 0.0085 * (1 + 1e-9));
+  }
   // R5: every tet's circumradius within the cell size (the criterion refined to).
   for (const auto& t : m.tets) {
     const Point3 a = m.vertices[t[0]];

@@ -91,11 +91,14 @@ struct RefinementStats {
   /// Of inserted_cell_centers, those the refinement lanes inserted (two parts
   /// of space side by side, on up to two threads), and their rounds.
   std::size_t cell_centers_in_lanes = 0;
+  /// Of inserted_facet_centers, those the lanes inserted.
+  std::size_t facet_centers_in_lanes = 0;
   std::size_t lane_rounds = 0;
   std::size_t lane_steps = 0;  ///< steps of those rounds (the lanes' pools topped up before each)
   /// Threads the lanes ran on (0: no round). One when MeshOptions::threads is,
-  /// or when the oracle or the cell size may not be called from several threads
-  /// at once (MeshOptions::oracle_concurrent, ScalarField::is_concurrent).
+  /// or when the oracle, the cell size, the facet size or the facet distance
+  /// may not be called from several threads at once
+  /// (MeshOptions::oracle_concurrent, ScalarField::is_concurrent).
   int lane_threads = 0;
   std::size_t guard_rejections = 0;  ///< refinement points refused by the minimum-size guard
   bool guard_fired() const { return guard_rejections > 0; }
