@@ -134,8 +134,12 @@ bool RefinementLanes::round(RefinementStats& stats, const Deadline& deadline) {
   ++stats.lane_rounds;
   stats.lane_threads = std::min(resolve_threads(threads_), 2);
   // 1. A new cut through the middle of the queued facets' and cells' centres.
+  // (The sequential steps since the last round may have destroyed the cells
+  // of crossed entries: a dead entry's cell is not read.)
   std::vector<ElementEntry> entries;
-  entries.swap(crossed_);
+  for (const ElementEntry& e : crossed_)
+    if (complex_.is_live(e.stamp)) entries.push_back(e);
+  crossed_.clear();
   for (int l = 0; l < 2; ++l) {
     BucketQueue<ElementEntry>& q = cells_.lane_queue(l);
     while (!q.empty()) {
