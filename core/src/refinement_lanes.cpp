@@ -86,7 +86,7 @@ struct RefinementLanes::Lane {
 
 RefinementLanes::RefinementLanes(RestrictedComplex& complex, CellLevel& cells, FacetLevel& facets,
                                  const CurveLevel& curves, const Criteria& criteria,
-                                 double min_size, int threads)
+                                 double min_size, int threads, bool surface)
     : complex_(complex),
       tr_(complex.triangulation()),
       cells_(cells),
@@ -96,7 +96,8 @@ RefinementLanes::RefinementLanes(RestrictedComplex& complex, CellLevel& cells, F
       threads_(criteria.cell_size.is_concurrent() && criteria.facet_size.is_concurrent() &&
                        criteria.facet_distance.is_concurrent()
                    ? threads
-                   : 1) {}
+                   : 1),
+      surface_(surface) {}
 
 void RefinementLanes::start() {
   axes_ = axes_by_extent(tr_);
@@ -113,7 +114,7 @@ void RefinementLanes::start() {
   }
   const double reach = (hi - lo) / kCoarse;
   cells_.set_lanes(true, reach * reach);
-  facets_.set_lanes(true, reach * reach);
+  facets_.set_lanes(surface_, reach * reach);
 }
 
 void RefinementLanes::place(Vertex_handle v) const {

@@ -46,11 +46,14 @@ class RefinementLanes {
   /// MeshOptions::threads (the lanes run on one thread when the cell size,
   /// the facet size or the facet distance may not be called from several
   /// threads: ScalarField::is_concurrent).
+  /// `surface`: facets go through the lanes too (RefinementLanes::start).
   RefinementLanes(RestrictedComplex& complex, CellLevel& cells, FacetLevel& facets,
-                  const CurveLevel& curves, const Criteria& criteria, double min_size, int threads);
+                  const CurveLevel& curves, const Criteria& criteria, double min_size, int threads,
+                  bool surface);
 
   /// Cuts space along its longest axis through the middle of the vertices and
-  /// turns the cell level's lanes on. Before the first cells are queued.
+  /// turns the cell level's lanes on, and the facet level's when `surface`.
+  /// Before the first cells are queued.
   void start();
   /// Gives a vertex the sequential steps inserted the bit of its lane.
   void place(Vertex_handle v) const;
@@ -83,6 +86,7 @@ class RefinementLanes {
   const CurveLevel& curves_;
   double min_size_sq_;
   int threads_;
+  bool surface_;
   std::array<int, 3> axes_{0, 1, 2};
   int axis_ = 0;
   double split_ = 0;

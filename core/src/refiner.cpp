@@ -46,7 +46,11 @@ Refiner::Refiner(const DomainOracle& oracle, const Criteria& criteria, const Mes
       scheduler_(*curve_level_, facets_, cells_, insertion_),
       lanes_(complex_, cells_, facets_, *curve_level_, criteria_,
              criteria_.min_size_for(oracle.bounding_box()),
-             options.oracle_concurrent ? options.threads : 1) {
+             options.oracle_concurrent ? options.threads : 1,
+             // Surface balls in the lanes only on smooth domains: with curves
+             // and corners the changed order of the surface's insertions
+             // gave worse meshes on two test inputs (see core/README.md).
+             oracle.corners().empty() && oracle.curves().empty()) {
   complex_.set_feature_patches(curves_.corner_patches(), curves_.curve_patches());
   insertion_.set_observer(this);
   new_cells_.reserve(128);
