@@ -26,8 +26,10 @@
 // more than one core, a thread of the command's own (start_heap_populator)
 // faults the heap in a few MiB ahead of the highest block operator new handed
 // out (MADV_POPULATE_WRITE: as a write would, without writing), so that the
-// zeroing happens on another core before the program gets there. It never
-// writes, so what the program reads and computes is the same bits.
+// zeroing happens on another core before the program gets there. It waits
+// while the run's own parallel loops use the cores (rdmesh::parallel_regions):
+// a refinement lane it preempts would hold up the other at the end of each step.
+// It never writes, so what the program reads and computes is the same bits.
 //
 // Only the command does this: the library leaves the process's allocator to
 // its host. Where any step is unavailable (another C library, a sanitizer's
@@ -42,6 +44,8 @@
 #include <cstdlib>  // first: defines __GLIBC__ under glibc
 #include <new>
 #include <thread>
+
+#include "rdmesh/parallel_for.h"
 
 #if defined(__linux__) && defined(__GLIBC__)
 #include <malloc.h>
@@ -121,8 +125,11 @@ void populate_loop() {
     const std::uintptr_t front = frontier.load(std::memory_order_relaxed) & ~(kHugePage - 1);
     if (done < front) done = front;  // behind the program: it faulted those itself
     const std::uintptr_t want = std::min(heap_end, front + kAhead);
-    // No block seen in the heap yet (front 0): nothing to be ahead of.
-    if (front == 0 || done >= want) {
+    // No block seen in the heap yet (front 0): nothing to be ahead of. While
+    // the run's own threads use the cores (parallel_regions), they fault
+    // their pages themselves.
+    if (front == 0 || done >= want ||
+        rdmesh::parallel_regions().load(std::memory_order_relaxed) > 0) {
       std::this_thread::sleep_for(kIdle);
       continue;
     }

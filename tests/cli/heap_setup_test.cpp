@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "rdmesh/parallel_for.h"
+
 #if defined(__SANITIZE_ADDRESS__)
 #define RDMESH_TEST_SANITIZED_HEAP 1
 #elif defined(__has_feature)
@@ -123,6 +125,35 @@ TEST(HeapSetup, ThePopulatorFaultsTheHeapInAheadOfTheProgram) {
   EXPECT_EQ(heap_frontier(), 0u);
   EXPECT_EQ(heap_populated_end(), 0u);
   (void)lo, (void)hi;
+#endif
+}
+
+TEST(HeapSetup, ThePopulatorWaitsWhileParallelLoopsHoldTheCores) {
+  setup_heap();
+  std::unique_ptr<char[]> one(new char[std::size_t{1} << 20]);  // a frontier, as above
+  char* volatile kept = one.get();
+  (void)kept;
+  const std::uintptr_t huge = std::uintptr_t{2} << 20;
+  const std::uintptr_t hi = ((heap_frontier() + huge - 1) & ~(huge - 1)) + 3 * huge;
+#if defined(__linux__) && defined(__GLIBC__) && !defined(RDMESH_TEST_SANITIZED_HEAP)
+  ASSERT_GT(heap_frontier(), 0u);
+  // Started inside a loop on two threads, it faults nothing in until the loop
+  // ends (it would need a few milliseconds for these pages).
+  bool idle_in_loop = false;
+  parallel_tasks(2, 2, [&](std::size_t task) {
+    if (task != 0) return;
+    start_heap_populator();
+    usleep(200000);
+    idle_in_loop = heap_populated_end() == 0;
+  });
+  EXPECT_TRUE(idle_in_loop) << "the populator ran while both threads were busy";
+  for (int i = 0; i < 20000 && heap_populated_end() < hi && !heap_populator_refused(); ++i)
+    usleep(1000);
+  if (!heap_populator_refused()) {
+    EXPECT_GE(heap_populated_end(), hi) << "the populator did not go on after the loop";
+  }
+#else
+  (void)hi;
 #endif
 }
 

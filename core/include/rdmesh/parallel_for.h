@@ -22,6 +22,15 @@ inline int resolve_threads(int requested) {
   return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 }
 
+/// The parallel_tasks calls running on more than one thread now, in the
+/// whole process. The command's heap populator (cli/heap_setup.cpp) waits
+/// while there are some: the cores are busy then, and a lane preempted by it
+/// would hold up the other at the end of the step.
+inline std::atomic<int>& parallel_regions() {
+  static std::atomic<int> running{0};
+  return running;
+}
+
 /// Items per chunk of for_chunks.
 constexpr std::size_t kParallelChunk = 4096;
 
@@ -52,6 +61,10 @@ void parallel_tasks(std::size_t n, int threads, Body body) {
       }
     }
   };
+  struct Running {
+    Running() { parallel_regions().fetch_add(1, std::memory_order_relaxed); }
+    ~Running() { parallel_regions().fetch_sub(1, std::memory_order_relaxed); }
+  } running;
   std::vector<std::thread> pool;
   pool.reserve(workers - 1);
   for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(work);
