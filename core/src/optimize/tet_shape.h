@@ -18,14 +18,25 @@ inline double max_dihedral_cosine(const Point3& p0, const Point3& p1, const Poin
                                   const Point3& p3) {
   const Point3 p[4] = {p0, p1, p2, p3};
   Point3 n[4];
-  double len[4];
+  double len[4], side[4];
+  int surest = 0;
   for (int k = 0; k < 4; ++k) {
     const Point3& a = p[(k + 1) & 3];
     n[k] = cross(p[(k + 2) & 3] - a, p[(k + 3) & 3] - a);
-    if (dot(n[k], p[k] - a) > 0) n[k] = -1.0 * n[k];  // outward: away from vertex k
     len[k] = norm(n[k]);
     if (!(len[k] > 0)) return 1.0;
+    side[k] = dot(n[k], p[k] - a);
+    if (std::abs(side[k]) > std::abs(side[surest])) surest = k;
   }
+  // Outward normals: away from the opposite vertex. side[k] is (-1)^(k+1)
+  // times six times the signed volume, so one sign serves all four faces; it
+  // is read off the largest of them. (Deciding each face on its own turns
+  // some normals of a nearly flat tet inward, and its zero angles then read
+  // as large ones.) A flat tet has the worst shape.
+  if (!(std::abs(side[surest]) > 0)) return 1.0;
+  const bool positive = (surest & 1) ? side[surest] > 0 : side[surest] < 0;
+  for (int k = 0; k < 4; ++k)
+    if ((k & 1) ? positive : !positive) n[k] = -1.0 * n[k];
   // The dihedral angle between faces k and l satisfies cos = -n_k . n_l (outward unit normals).
   double worst = -1.0;
   for (int k = 0; k < 4; ++k)
