@@ -79,15 +79,26 @@ std::string failure_reason(const Options& opt, const MeshRun& run) {
     return "refinement stopped at the time limit (" + short_number(opt.time_limit) + " s) with " +
            std::to_string(stats.elements_left) + " elements still queued";
   }
-  if (run.fidelity && !run.fidelity->passed) {
-    return "the mesh does not match the model: " + summarize_problems(*run.fidelity);
+  std::string reason;
+  if (run.quality.inverted_tets > 0) {
+    const std::size_t n = run.quality.inverted_tets;
+    reason = std::to_string(n) + (n == 1 ? " tetrahedron is" : " tetrahedra are") +
+             " inverted or flat (signed volume <= 0)";
   }
-  return {};
+  if (run.fidelity && !run.fidelity->passed) {
+    if (!reason.empty()) reason += "; ";
+    reason += "the mesh does not match the model: " + summarize_problems(*run.fidelity);
+  }
+  return reason;
 }
 
 nlohmann::json run_report(const Options& opt, const DomainOracle& oracle, const MeshRun& run) {
-  return report_json(opt, run.criteria, oracle, run.result.stats, run.result.exudation,
-                     run.result.improvement, run.quality, run.fidelity, run.times, run.fem);
+  nlohmann::json j =
+      report_json(opt, run.criteria, oracle, run.result.stats, run.result.exudation,
+                  run.result.improvement, run.quality, run.fidelity, run.times, run.fem);
+  const std::string reason = failure_reason(opt, run);
+  j["failure"] = reason.empty() ? nlohmann::json(nullptr) : nlohmann::json(reason);
+  return j;
 }
 
 void apply_fem(const Options& opt, const AppliedSizes& sizes, const DomainOracle& oracle,

@@ -214,6 +214,9 @@ TEST(CliLimits, TheTimeLimitAlsoStopsProtectionAndTheInitialPoints) {
   EXPECT_TRUE(report["refinement"]["time_limit_reached"].get<bool>());
   const std::string phase = report["refinement"]["stopped_in"].get<std::string>();
   EXPECT_TRUE(phase == "protection" || phase == "initial points") << phase;
+  EXPECT_NE(report["failure"].get<std::string>().find("the time limit (0.2 s) stopped the run"),
+            std::string::npos)
+      << report["failure"];
 }
 
 TEST(CliLimits, SharedJunkPlyIsRefused) {

@@ -40,8 +40,13 @@ struct MeshRun {
   /// when no FEM option changes the mesh): write_outputs commits or drops it.
   StagedMesh staged;
 
-  /// The time limit stopped refinement or the mesh failed the fidelity check.
-  bool failed() const { return result.stats.time_limit_reached || (fidelity && !fidelity->passed); }
+  /// The time limit stopped refinement, the mesh has inverted or flat
+  /// tetrahedra (whatever the input: no solver takes them), or it failed the
+  /// fidelity check.
+  bool failed() const {
+    return result.stats.time_limit_reached || quality.inverted_tets > 0 ||
+           (fidelity && !fidelity->passed);
+  }
 };
 
 /// Meshes `input` with `criteria` (resolve_criteria) and `base`'s progress
@@ -54,8 +59,9 @@ struct MeshRun {
 MeshRun mesh_loaded(const Options& opt, const LoadedInput& input, const Criteria& criteria,
                     MeshOptions base = {});
 
-/// The one-line reason of a failed run (time limit or fidelity), without the
-/// input's name: "the mesh does not match the model: ...".
+/// The one-line reason of a failed run (time limit, inverted tetrahedra or
+/// fidelity), without the input's name: "the mesh does not match the model:
+/// ..."; empty when the run did not fail.
 std::string failure_reason(const Options& opt, const MeshRun& run);
 
 /// The JSON report of a run (what --report writes) on `oracle`, the input's.
