@@ -19,25 +19,36 @@ namespace {
 using io_detail::append_double;
 using io_detail::append_int;
 
+/// Lines are gathered in blocks of this many bytes before they go to the
+/// stream: one stream call per line took half of the writing time.
+constexpr std::size_t kBlock = 1 << 16;
+
+/// Writes `text` to `out` once it holds a block.
+void flush_block(std::ostream& out, std::string& text) {
+  if (text.size() < kBlock) return;
+  out.write(text.data(), static_cast<std::streamsize>(text.size()));
+  text.clear();
+}
+
 /// Writes one element section: keyword, count, then "i1 ... iN ref" per element (1-based).
 template <std::size_t N, class LabelT>
 void write_section(std::ostream& out, const char* keyword,
                    const std::vector<std::array<int, N>>& elements,
                    const std::vector<LabelT>& labels) {
-  std::string line = std::string(keyword) + "\n";
-  append_int(line, static_cast<long long>(elements.size()));
-  line += '\n';
-  out << line;
+  std::string text = std::string(keyword) + "\n";
+  text.reserve(kBlock + 256);
+  append_int(text, static_cast<long long>(elements.size()));
+  text += '\n';
   for (std::size_t e = 0; e < elements.size(); ++e) {
-    line.clear();
     for (int v : elements[e]) {
-      append_int(line, v + 1);
-      line += ' ';
+      append_int(text, v + 1);
+      text += ' ';
     }
-    append_int(line, labels[e].value);
-    line += '\n';
-    out << line;
+    append_int(text, labels[e].value);
+    text += '\n';
+    flush_block(out, text);
   }
+  out << text;
 }
 
 /// TetrahedraP2, TrianglesP2 and EdgesP2: the vertices, then the mid nodes
@@ -63,9 +74,9 @@ void write_medit(const TetMesh& mesh, std::ostream& out) {
     vertex_ref[mesh.corner_vertices[c]] = mesh.corner_ids[c].value;
   }
   std::string line;
+  line.reserve(kBlock + 256);
   for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
     const Point3& p = mesh.vertices[i];
-    line.clear();
     append_double(line, p.x);
     line += ' ';
     append_double(line, p.y);
@@ -74,9 +85,9 @@ void write_medit(const TetMesh& mesh, std::ostream& out) {
     line += ' ';
     append_int(line, vertex_ref[i]);
     line += '\n';
-    out << line;
+    flush_block(out, line);
   }
-  out << '\n';
+  out << line << '\n';
   if (is_second_order(mesh)) {
     write_p2_sections(out, mesh);
   } else {
