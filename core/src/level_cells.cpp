@@ -67,8 +67,20 @@ void CellLevel::consider(Cell_handle c) {
 }
 
 std::optional<ElementEntry> CellLevel::pop() {
-  const ElementEntry e = queue_.pop();
+  ElementEntry e = queue_.pop();
+  const bool pinned = e.facet == kPinned;
+  e.facet = -1;
   if (!complex_.is_live(e.stamp) || !violation(e.cell)) return std::nullopt;
+  if (!pinned && lanes_on_ && e.cell->info().squared_radius < lane_max_squared_radius_) {
+    for (int lane = 0; lane < 2; ++lane) {
+      if (in_lane(e.cell, lane)) {
+        lanes_[lane].push(bucket_of(e.priority), e);
+        return std::nullopt;
+      }
+    }
+    parked_.push_back(e);
+    return std::nullopt;
+  }
   return e;
 }
 

@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <vector>
 
 #include "bucket_queue.h"
 #include "element_entry.h"
@@ -35,8 +36,10 @@ class CellLevel {
 
   /// The level's own queue (the sequential steps') is empty.
   bool empty() const { return queue_.empty(); }
-  /// Every queued entry, the lanes' too.
-  std::size_t size() const { return queue_.size() + lanes_[0].size() + lanes_[1].size(); }
+  /// Every queued entry, the lanes' and the parked ones too.
+  std::size_t size() const {
+    return queue_.size() + lanes_[0].size() + lanes_[1].size() + parked_.size();
+  }
 
   /// Refinement lanes (refinement_lanes.h): while on, consider() sends a cell
   /// all of whose vertices hold lane k's bit to lane k's queue.
@@ -48,8 +51,15 @@ class CellLevel {
   }
   BucketQueue<ElementEntry>& lane_queue(int lane) { return lanes_[lane]; }
   const BucketQueue<ElementEntry>& lane_queue(int lane) const { return lanes_[lane]; }
-  /// Queues an entry for the sequential steps (one a lane could not refine).
-  void push(const ElementEntry& e) { queue_.push(bucket_of(e.priority), e); }
+  /// Queues an entry for the sequential steps (one a lane could not refine):
+  /// pop() refines it, never hands it back to the lanes.
+  void push(ElementEntry e) {
+    e.facet = kPinned;
+    queue_.push(bucket_of(e.priority), e);
+  }
+  /// The entries pop() parked, for the next round of the lanes (which takes them).
+  std::vector<ElementEntry>& parked() { return parked_; }
+  const std::vector<ElementEntry>& parked() const { return parked_; }
   /// The entry of cell c for `v`, its violation.
   static ElementEntry entry(Cell_handle c, const Violation& v) {
     return {v.priority, c, c->info().stamp, -1};
@@ -57,7 +67,11 @@ class CellLevel {
   /// The queue bucket of a priority.
   static std::size_t bucket_of(double priority);
   /// Pops the worst entry: the cell, if it still exists and still violates a
-  /// rule; else nullopt (the entry was stale).
+  /// rule; else nullopt: the entry was stale, or, lanes on, the cell is small
+  /// enough for a lane and push() did not queue it. Such a cell goes to the
+  /// lane that owns it now (the cut moved since it was queued), or is parked
+  /// for the next round's cut (parked()): refining it here would refine the
+  /// whole layer of cells along the cut on one thread.
   std::optional<ElementEntry> pop();
 
   /// refine-tet-facet-or-edge for the popped entry's cell: consider its
@@ -74,10 +88,14 @@ class CellLevel {
   }
 
  private:
+  /// ElementEntry::facet of an entry push() queued (-1 for the others).
+  static constexpr int kPinned = -3;
+
   const RestrictedComplex& complex_;
   const Criteria& criteria_;
   double shape_bound_sq_;  ///< beta_3^2
   BucketQueue<ElementEntry> queue_;
+  std::vector<ElementEntry> parked_;
   BucketQueue<ElementEntry> lanes_[2];
   bool lanes_on_ = false;
   double lane_max_squared_radius_ = 0;

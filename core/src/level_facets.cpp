@@ -81,9 +81,22 @@ int FacetLevel::lane_of(Cell_handle c, int i) const {
 }
 
 std::optional<ElementEntry> FacetLevel::pop() {
-  const ElementEntry e = queue_.top();
+  ElementEntry e = queue_.top();
   queue_.pop();
+  const bool pinned = e.facet >= kPinned;
+  e.facet &= 3;
   if (!complex_.is_live(e.stamp) || !violation(e.cell, e.facet)) return std::nullopt;
+  if (!pinned && lanes_on_) {
+    const Point3 center = e.cell->info().surface_center[e.facet];
+    if (complex_.facet_power(e.cell, e.facet, center) < lane_max_squared_radius_) {
+      const int lane = lane_of(e.cell, e.facet);
+      if (lane >= 0)
+        lanes_[lane].push(e);
+      else
+        parked_.push_back(e);
+      return std::nullopt;
+    }
+  }
   return e;
 }
 

@@ -37,8 +37,10 @@ class FacetLevel {
 
   /// The level's own queue (the sequential steps') is empty.
   bool empty() const { return queue_.empty(); }
-  /// Every queued entry, the lanes' too.
-  std::size_t size() const { return queue_.size() + lanes_[0].size() + lanes_[1].size(); }
+  /// Every queued entry, the lanes' and the parked ones too.
+  std::size_t size() const {
+    return queue_.size() + lanes_[0].size() + lanes_[1].size() + parked_.size();
+  }
 
   /// Refinement lanes (refinement_lanes.h): while on, consider() sends a
   /// facet whose two cells lie in lane k to lane k's queue, unless its surface
@@ -51,13 +53,24 @@ class FacetLevel {
   using Queue = std::priority_queue<ElementEntry>;
   Queue& lane_queue(int lane) { return lanes_[lane]; }
   const Queue& lane_queue(int lane) const { return lanes_[lane]; }
-  /// Queues an entry for the sequential steps (one a lane could not refine).
-  void push(const ElementEntry& e) { queue_.push(e); }
+  /// Queues an entry for the sequential steps (one a lane could not refine):
+  /// pop() refines it, never hands it back to the lanes.
+  void push(ElementEntry e) {
+    e.facet += kPinned;
+    queue_.push(e);
+  }
+  /// The entries pop() parked, for the next round of the lanes (which takes them).
+  std::vector<ElementEntry>& parked() { return parked_; }
+  const std::vector<ElementEntry>& parked() const { return parked_; }
   /// The lane whose queue takes facet (c, i) (both cells in it, a small
   /// surface ball); -1: the sequential steps, or lanes off.
   int lane_of(Cell_handle c, int i) const;
   /// Pops the worst entry: the facet, if it still exists and still violates a
-  /// rule; else nullopt (the entry was stale).
+  /// rule; else nullopt: the entry was stale, or, lanes on, the facet's
+  /// surface ball is small enough for a lane and push() did not queue it. Such
+  /// a facet goes to the lane that owns both its cells now (they were refined,
+  /// or the cut moved, since it was queued), or is parked for the next round's
+  /// cut (parked()), as CellLevel::pop does.
   std::optional<ElementEntry> pop();
 
   /// refine-facet-or-edge for facet (c, i): consider the centre c_f of its
@@ -73,11 +86,15 @@ class FacetLevel {
                   int& facet) const;
 
  private:
+  /// Added to ElementEntry::facet by push().
+  static constexpr int kPinned = 8;
+
   const RestrictedComplex& complex_;
   const Criteria& criteria_;
   double shape_bound_;  ///< 4 sin^2(facet angle): min edge^2 / R^2 below it is bad
   Queue queue_;
   Queue lanes_[2];
+  std::vector<ElementEntry> parked_;
   bool lanes_on_ = false;
   double lane_max_squared_radius_ = 0;
 };

@@ -123,7 +123,8 @@ void RefinementLanes::place(Vertex_handle v) const {
 
 bool RefinementLanes::pending() const {
   return !cells_.lane_queue(0).empty() || !cells_.lane_queue(1).empty() ||
-         !facets_.lane_queue(0).empty() || !facets_.lane_queue(1).empty() || !crossed_.empty();
+         !facets_.lane_queue(0).empty() || !facets_.lane_queue(1).empty() || !crossed_.empty() ||
+         !cells_.parked().empty() || !facets_.parked().empty();
 }
 
 Point3 RefinementLanes::centre_of(const ElementEntry& e) {
@@ -141,6 +142,11 @@ bool RefinementLanes::round(RefinementStats& stats, const Deadline& deadline) {
   for (const ElementEntry& e : crossed_)
     if (complex_.is_live(e.stamp)) entries.push_back(e);
   crossed_.clear();
+  for (std::vector<ElementEntry>* parked : {&facets_.parked(), &cells_.parked()}) {
+    for (const ElementEntry& e : *parked)
+      if (complex_.is_live(e.stamp)) entries.push_back(e);
+    parked->clear();
+  }
   for (int l = 0; l < 2; ++l) {
     BucketQueue<ElementEntry>& q = cells_.lane_queue(l);
     while (!q.empty()) {

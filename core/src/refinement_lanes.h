@@ -6,7 +6,8 @@
 // own. The cell level queues each bad cell in the queue of the lane that owns
 // it, the facet level each bad facet of D|S whose two cells a lane owns and
 // whose surface ball is small (the others, on the cut or in the coarse start,
-// in the levels' own queues for the sequential steps). In a round, each lane
+// in the levels' own queues for the sequential steps, which park the small
+// ones for the next round's cut: CellLevel::pop, FacetLevel::pop). In a round, each lane
 // refines its facets, then its cells, worst first, on its own thread: it
 // inserts the surface ball's centre or the circumcentre when the conflict zone
 // and every cell next to it are its own, finite, and free of curve and corner
@@ -57,7 +58,7 @@ class RefinementLanes {
   void start();
   /// Gives a vertex the sequential steps inserted the bit of its lane.
   void place(Vertex_handle v) const;
-  /// Whether a lane has cells queued.
+  /// Whether a lane has elements queued, or the levels parked some for a round.
   bool pending() const;
   /// One round: a new cut (alternating the two longest axes) through the
   /// median of the queued facets' and cells' centres, the lanes' queues shared out again,
