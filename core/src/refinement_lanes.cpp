@@ -93,8 +93,10 @@ RefinementLanes::RefinementLanes(RestrictedComplex& complex, CellLevel& cells, F
       facets_(facets),
       curves_(curves),
       min_size_sq_(min_size * min_size),
-      threads_(criteria.cell_size.is_concurrent() && criteria.facet_size.is_concurrent() &&
-                       criteria.facet_distance.is_concurrent()
+      // The facet fields matter only when facets go through the lanes.
+      threads_(criteria.cell_size.is_concurrent() &&
+                       (!surface || (criteria.facet_size.is_concurrent() &&
+                                     criteria.facet_distance.is_concurrent()))
                    ? threads
                    : 1),
       surface_(surface) {}

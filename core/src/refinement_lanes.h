@@ -45,8 +45,8 @@ class RefinementLanes {
  public:
   /// All must outlive the lanes. `min_size`: Insertion's guard. `threads`:
   /// MeshOptions::threads (the lanes run on one thread when the cell size,
-  /// the facet size or the facet distance may not be called from several
-  /// threads: ScalarField::is_concurrent).
+  /// or with `surface` the facet size or the facet distance, may not be
+  /// called from several threads: ScalarField::is_concurrent).
   /// `surface`: facets go through the lanes too (RefinementLanes::start).
   RefinementLanes(RestrictedComplex& complex, CellLevel& cells, FacetLevel& facets,
                   const CurveLevel& curves, const Criteria& criteria, double min_size, int threads,

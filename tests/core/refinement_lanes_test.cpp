@@ -11,6 +11,7 @@
 #include <set>
 #include <vector>
 
+#include "capped_cylinder_oracle.h"
 #include "rdmesh/mesher.h"
 #include "test_domains.h"
 
@@ -105,6 +106,28 @@ TEST(RefinementLanes, AThreadSafeCellSizeFieldRunsOnTwoThreadsWithTheSameMesh) {
     EXPECT_EQ(one.mesh.triangles, other->mesh.triangles);
     EXPECT_EQ(one.stats.cell_centers_in_lanes, other->stats.cell_centers_in_lanes);
   }
+}
+
+TEST(RefinementLanes, FacetFieldsNeedNotBeThreadSafeWhenFacetsStaySequential) {
+  // A domain with curves: its facets stay with the sequential steps, so a
+  // facet size that is not thread-safe does not keep the cells' lanes on one
+  // thread (it did).
+  const test::CappedCylinderOracle oracle(0.5, 0.5);
+  Criteria criteria = test::uniform_criteria(0.035);
+  criteria.facet_size = ScalarField{0.0, [](const Point3&) { return 0.07; }, false};
+  MeshOptions options;
+  options.threads = 2;
+  options.exudation.enabled = false;
+  options.improvement.enabled = false;
+  const MeshResult two = generate_mesh(oracle, criteria, options);
+  ASSERT_GT(two.stats.cell_centers_in_lanes, 0u);
+  EXPECT_EQ(two.stats.facet_centers_in_lanes, 0u);
+  EXPECT_EQ(two.stats.lane_threads, 2);
+  options.threads = 1;
+  const MeshResult one = generate_mesh(oracle, criteria, options);
+  EXPECT_EQ(one.stats.lane_threads, 1);
+  EXPECT_TRUE(same_bits(one.mesh.vertices, two.mesh.vertices)) << "vertex coordinates differ";
+  EXPECT_EQ(one.mesh.tets, two.mesh.tets);
 }
 
 TEST(RefinementLanes, FieldsComposedOfThreadSafeFieldsAreThreadSafe) {
