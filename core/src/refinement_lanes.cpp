@@ -86,20 +86,18 @@ struct RefinementLanes::Lane {
 
 RefinementLanes::RefinementLanes(RestrictedComplex& complex, CellLevel& cells, FacetLevel& facets,
                                  const CurveLevel& curves, const Criteria& criteria,
-                                 double min_size, int threads, bool surface)
+                                 double min_size, int threads, bool smooth)
     : complex_(complex),
       tr_(complex.triangulation()),
       cells_(cells),
       facets_(facets),
       curves_(curves),
       min_size_sq_(min_size * min_size),
-      // The facet fields matter only when facets go through the lanes.
-      threads_(criteria.cell_size.is_concurrent() &&
-                       (!surface || (criteria.facet_size.is_concurrent() &&
-                                     criteria.facet_distance.is_concurrent()))
-                   ? threads
-                   : 1),
-      surface_(surface) {}
+      threads_(criteria.cell_size.is_concurrent() ? threads : 1),
+      // A facet size or facet distance that may not be called from two
+      // threads keeps the facets in the sequential steps, not the cells.
+      surface_(smooth && criteria.facet_size.is_concurrent() &&
+               criteria.facet_distance.is_concurrent()) {}
 
 void RefinementLanes::start() {
   axes_ = axes_by_extent(tr_);

@@ -44,16 +44,16 @@ namespace rdmesh::detail {
 class RefinementLanes {
  public:
   /// All must outlive the lanes. `min_size`: Insertion's guard. `threads`:
-  /// MeshOptions::threads (the lanes run on one thread when the cell size,
-  /// or with `surface` the facet size or the facet distance, may not be
-  /// called from several threads: ScalarField::is_concurrent).
-  /// `surface`: facets go through the lanes too (RefinementLanes::start).
+  /// MeshOptions::threads (the lanes run on one thread when the cell size may
+  /// not be called from several threads: ScalarField::is_concurrent). Facets
+  /// go through the lanes too on a `smooth` domain (no curves, no corners)
+  /// when the facet size and the facet distance may.
   RefinementLanes(RestrictedComplex& complex, CellLevel& cells, FacetLevel& facets,
                   const CurveLevel& curves, const Criteria& criteria, double min_size, int threads,
-                  bool surface);
+                  bool smooth);
 
   /// Cuts space along its longest axis through the middle of the vertices and
-  /// turns the cell level's lanes on, and the facet level's when `surface`.
+  /// turns the cell level's lanes on, and the facet level's (see the constructor).
   /// Before the first cells are queued.
   void start();
   /// Gives a vertex the sequential steps inserted the bit of its lane.

@@ -49,7 +49,7 @@ Refiner::Refiner(const DomainOracle& oracle, const Criteria& criteria, const Mes
              options.oracle_concurrent ? options.threads : 1,
              // Surface balls in the lanes only on smooth domains: with curves
              // and corners the changed order of the surface's insertions
-             // gave worse meshes on two test inputs (see core/README.md).
+             // gave worse meshes on test inputs (see core/README.md).
              oracle.corners().empty() && oracle.curves().empty()) {
   complex_.set_feature_patches(curves_.corner_patches(), curves_.curve_patches());
   insertion_.set_observer(this);
