@@ -27,7 +27,8 @@ CLI's (the default sizes of CAD models, the fidelity check, the report).
 
 Errors raise rdmesh.InputError (bad input or options, the CLI's exit code 2,
 same one-line message), rdmesh.OutputError, rdmesh.FidelityError (the mesh does
-not match the model or the time limit stopped it: the CLI's exit code 4),
+not match the model, has inverted tetrahedra, or the time limit stopped it: the
+CLI's exit code 4),
 rdmesh.OracleError and rdmesh.InternalError, all derived from rdmesh.Error.
 Ctrl-C (KeyboardInterrupt) stops a run at the next progress point.
 The run's warnings (the CLI's "rdmesh: warning: ..." lines) are issued as

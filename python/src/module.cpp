@@ -27,7 +27,8 @@ namespace py = pybind11;
 namespace rdmesh::python {
 namespace {
 
-/// A run that failed its fidelity check or time limit (the CLI's exit code 4).
+/// A run that failed its fidelity check, has inverted tetrahedra or met its
+/// time limit (the CLI's exit code 4).
 class FidelityError : public Error {
  public:
   using Error::Error;
