@@ -58,12 +58,20 @@ void CellLevel::consider(Cell_handle c) {
   const Violation v = violation(c);
   if (!v) return;
   const ElementEntry e = entry(c, v);
-  if (lanes_on_ && c->info().squared_radius < lane_max_squared_radius_) {
-    for (int lane = 0; lane < 2; ++lane) {
-      if (in_lane(c, lane)) return lanes_[lane].push(bucket_of(v.priority), e);
-    }
-  }
+  const int lane = fits_lane(c) ? owner(c) : -1;
+  if (lane >= 0) return lanes_[lane].push(bucket_of(v.priority), e);
   queue_.push(bucket_of(v.priority), e);
+}
+
+bool CellLevel::fits_lane(Cell_handle c) const {
+  return lanes_on_ && c->info().squared_radius < lane_max_squared_radius_;
+}
+
+int CellLevel::owner(Cell_handle c) {
+  for (int lane = 0; lane < 2; ++lane) {
+    if (in_lane(c, lane)) return lane;
+  }
+  return -1;
 }
 
 std::optional<ElementEntry> CellLevel::pop() {
@@ -71,14 +79,12 @@ std::optional<ElementEntry> CellLevel::pop() {
   const bool pinned = e.facet == kPinned;
   e.facet = -1;
   if (!complex_.is_live(e.stamp) || !violation(e.cell)) return std::nullopt;
-  if (!pinned && lanes_on_ && e.cell->info().squared_radius < lane_max_squared_radius_) {
-    for (int lane = 0; lane < 2; ++lane) {
-      if (in_lane(e.cell, lane)) {
-        lanes_[lane].push(bucket_of(e.priority), e);
-        return std::nullopt;
-      }
-    }
-    parked_.push_back(e);
+  if (!pinned && fits_lane(e.cell)) {
+    const int lane = owner(e.cell);
+    if (lane >= 0)
+      lanes_[lane].push(bucket_of(e.priority), e);
+    else
+      parked_.push_back(e);
     return std::nullopt;
   }
   return e;

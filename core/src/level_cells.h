@@ -90,6 +90,10 @@ class CellLevel {
  private:
   /// ElementEntry::facet of an entry push() queued (-1 for the others).
   static constexpr int kPinned = -3;
+  /// Lanes on and cell c's ball small enough for a lane.
+  bool fits_lane(Cell_handle c) const;
+  /// The lane that owns all four vertices of c, or -1.
+  static int owner(Cell_handle c);
 
   const RestrictedComplex& complex_;
   const Criteria& criteria_;

@@ -69,10 +69,15 @@ void FacetLevel::consider(Cell_handle c, int i) {
   queue_.push(e);
 }
 
-int FacetLevel::lane_of(Cell_handle c, int i) const {
-  if (!lanes_on_) return -1;
+int FacetLevel::lane_of(Cell_handle c, int i) const { return fits_lane(c, i) ? owner(c, i) : -1; }
+
+bool FacetLevel::fits_lane(Cell_handle c, int i) const {
+  if (!lanes_on_) return false;
   const Point3 center = c->info().surface_center[i];
-  if (!(complex_.facet_power(c, i, center) < lane_max_squared_radius_)) return -1;
+  return complex_.facet_power(c, i, center) < lane_max_squared_radius_;
+}
+
+int FacetLevel::owner(Cell_handle c, int i) {
   const Cell_handle n = c->neighbor(i);
   for (int lane = 0; lane < 2; ++lane) {
     if (in_lane(c, lane) && in_lane(n, lane)) return lane;
@@ -86,16 +91,13 @@ std::optional<ElementEntry> FacetLevel::pop() {
   const bool pinned = e.facet >= kPinned;
   e.facet &= 3;
   if (!complex_.is_live(e.stamp) || !violation(e.cell, e.facet)) return std::nullopt;
-  if (!pinned && lanes_on_) {
-    const Point3 center = e.cell->info().surface_center[e.facet];
-    if (complex_.facet_power(e.cell, e.facet, center) < lane_max_squared_radius_) {
-      const int lane = lane_of(e.cell, e.facet);
-      if (lane >= 0)
-        lanes_[lane].push(e);
-      else
-        parked_.push_back(e);
-      return std::nullopt;
-    }
+  if (!pinned && fits_lane(e.cell, e.facet)) {
+    const int lane = owner(e.cell, e.facet);
+    if (lane >= 0)
+      lanes_[lane].push(e);
+    else
+      parked_.push_back(e);
+    return std::nullopt;
   }
   return e;
 }

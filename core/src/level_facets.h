@@ -88,6 +88,10 @@ class FacetLevel {
  private:
   /// Added to ElementEntry::facet by push().
   static constexpr int kPinned = 8;
+  /// Lanes on and the surface ball of facet (c, i) small enough for a lane.
+  bool fits_lane(Cell_handle c, int i) const;
+  /// The lane that owns both cells of facet (c, i), or -1.
+  static int owner(Cell_handle c, int i);
 
   const RestrictedComplex& complex_;
   const Criteria& criteria_;
