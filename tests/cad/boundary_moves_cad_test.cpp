@@ -197,7 +197,8 @@ TEST_P(BoundaryMovesCad, RaiseTheSmallestAngleAndKeepTheModel) {
 
 INSTANTIATE_TEST_SUITE_P(Shared, BoundaryMovesCad,
                          ::testing::Values(Part{"occtsample_ANC101.step", 10},
-                                           Part{"netgen_frame.step", 10}),
+                                           Part{"netgen_frame.step", 10},
+                                           Part{"occtsample_MBBGehauseRohteil.step", 10}),
                          [](const auto& info) { return test::file_test_name(info.param.file); });
 
 TEST(BoundaryMovesCli, GmshPartReachesTheTargetWithDefaultsOnAnyThreads) {
