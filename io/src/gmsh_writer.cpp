@@ -1,4 +1,4 @@
-// Gmsh MSH 4.1 writer, ASCII or binary (msh_tokens.h).
+// Gmsh MSH 4.1 writer, ASCII or binary (number_tokens.h).
 //
 // Layout: one elementary volume per subdomain, one elementary surface per
 // patch, one elementary curve per curve and one elementary point per corner,
@@ -20,7 +20,7 @@
 
 #include "element_nodes.h"
 #include "mesh_labels.h"
-#include "msh_tokens.h"
+#include "number_tokens.h"
 #include "partition_boundaries.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/mesh_writers.h"
@@ -88,7 +88,7 @@ std::vector<int> sorted_tags(std::vector<int> tags) {
 }
 
 /// "n t1 t2 ...": a count, then the tags.
-void write_tags(io_detail::MshTokens& t, const std::vector<int>& tags) {
+void write_tags(io_detail::NumberTokens& t, const std::vector<int>& tags) {
   t.z(static_cast<long long>(tags.size()));
   for (int tag : tags) t.i(tag);
 }
@@ -137,7 +137,7 @@ Point3 corner_position(const TetMesh& mesh, int id, const std::vector<int>& grou
 }
 
 /// One entity: tag, position or box, its physical group (same tag), its boundary.
-void write_entity(io_detail::MshTokens& t, int id, const std::vector<double>& where,
+void write_entity(io_detail::NumberTokens& t, int id, const std::vector<double>& where,
                   const std::vector<int>* boundary) {
   t.i(id);
   for (double c : where) t.d(c);
@@ -150,7 +150,7 @@ void write_entity(io_detail::MshTokens& t, int id, const std::vector<double>& wh
 void write_entities(std::ostream& out, const TetMesh& mesh, const Levels& levels, bool binary) {
   const Level &points = levels[0], &curves = levels[1], &surfaces = levels[2], &volumes = levels[3];
   out << "$Entities\n";
-  io_detail::MshTokens t(out, binary);
+  io_detail::NumberTokens t(out, binary);
   for (const Level* level : {&points, &curves, &surfaces, &volumes}) {
     t.z(static_cast<long long>(level->labels.size()));
   }
@@ -183,7 +183,7 @@ void write_entities(std::ostream& out, const TetMesh& mesh, const Levels& levels
 }
 
 /// One node's "x y z" line.
-void write_point(io_detail::MshTokens& t, const Point3& p) {
+void write_point(io_detail::NumberTokens& t, const Point3& p) {
   t.d(p.x);
   t.d(p.y);
   t.d(p.z);
@@ -195,7 +195,7 @@ void write_point(io_detail::MshTokens& t, const Point3& p) {
 void write_nodes(std::ostream& out, const TetMesh& mesh, const Levels& levels, bool binary) {
   const auto n = static_cast<long long>(mesh.vertices.size());
   out << "$Nodes\n";
-  io_detail::MshTokens t(out, binary);
+  io_detail::NumberTokens t(out, binary);
   if (n == 0) {
     for (int k = 0; k < 4; ++k) t.z(0);
     t.end_line();
@@ -225,7 +225,7 @@ void write_nodes(std::ostream& out, const TetMesh& mesh, const Levels& levels, b
 
 /// One element block per non-empty group; `next_tag` is the running 1-based element tag.
 template <std::size_t N>
-void write_element_blocks(io_detail::MshTokens& t, int dim, int gmsh_type,
+void write_element_blocks(io_detail::NumberTokens& t, int dim, int gmsh_type,
                           const std::vector<std::array<int, N>>& elements, const Level& level,
                           long long& next_tag) {
   for (std::size_t k = 0; k < level.labels.size(); ++k) {
@@ -256,7 +256,7 @@ struct BoundaryBlocks {
 };
 
 /// One block per partition-boundary entity of dimension `dim` (Gmsh type `type`).
-void write_boundary_blocks(io_detail::MshTokens& t, int dim, int type, const BoundaryBlocks& b,
+void write_boundary_blocks(io_detail::NumberTokens& t, int dim, int type, const BoundaryBlocks& b,
                            long long& next_tag) {
   int tag = b.first_tag[dim];
   for (const io_detail::PartitionBoundary& e : (*b.entities)[dim]) {
@@ -293,7 +293,7 @@ void write_elements(std::ostream& out, const TetMesh& mesh, const Levels& levels
   }
   out << "$Elements\n";
   {
-    io_detail::MshTokens t(out, binary);
+    io_detail::NumberTokens t(out, binary);
     t.z(static_cast<long long>(num_blocks));
     t.z(num_elements);
     t.z(num_elements ? 1 : 0);
@@ -389,7 +389,7 @@ void write_partitioned_entities(std::ostream& out, const TetMesh& mesh, const Le
   const int num_partitions =
       *std::max_element(mesh.tet_partition.begin(), mesh.tet_partition.end());
   out << "$PartitionedEntities\n";
-  io_detail::MshTokens t(out, binary);
+  io_detail::NumberTokens t(out, binary);
   t.z(num_partitions);
   t.end_line();
   t.z(0);  // no ghost entities
@@ -472,7 +472,7 @@ void write_partitioned_nodes(std::ostream& out, const TetMesh& mesh,
   }
   const auto n = static_cast<long long>(mesh.vertices.size());
   out << "$Nodes\n";
-  io_detail::MshTokens t(out, binary);
+  io_detail::NumberTokens t(out, binary);
   for (long long v : {static_cast<long long>(count_non_empty(nodes)), n, 1LL, n}) t.z(v);
   t.end_line();
   for (std::size_t i = 0; i < volumes.size(); ++i) {

@@ -4,11 +4,11 @@
 // (vertex indices), and the corner id as the reference of each corner vertex
 // (other vertices keep ref 0), since the Corners keyword carries no id.
 #include <ostream>
-#include <string>
 #include <vector>
 
 #include "element_nodes.h"
 #include "mesh_labels.h"
+#include "number_tokens.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/mesh_writers.h"
 #include "rdmesh/second_order.h"
@@ -16,39 +16,18 @@
 namespace rdmesh {
 namespace {
 
-using io_detail::append_double;
-using io_detail::append_int;
-
-/// Lines are gathered in blocks of this many bytes before they go to the
-/// stream: one stream call per line took half of the writing time.
-constexpr std::size_t kBlock = 1 << 16;
-
-/// Writes `text` to `out` once it holds a block.
-void flush_block(std::ostream& out, std::string& text) {
-  if (text.size() < kBlock) return;
-  out.write(text.data(), static_cast<std::streamsize>(text.size()));
-  text.clear();
-}
-
 /// Writes one element section: keyword, count, then "i1 ... iN ref" per element (1-based).
 template <std::size_t N, class LabelT>
 void write_section(std::ostream& out, const char* keyword,
                    const std::vector<std::array<int, N>>& elements,
                    const std::vector<LabelT>& labels) {
-  std::string text = std::string(keyword) + "\n";
-  text.reserve(kBlock + 256);
-  append_int(text, static_cast<long long>(elements.size()));
-  text += '\n';
+  out << keyword << '\n' << elements.size() << '\n';
+  io_detail::NumberTokens t(out, false);
   for (std::size_t e = 0; e < elements.size(); ++e) {
-    for (int v : elements[e]) {
-      append_int(text, v + 1);
-      text += ' ';
-    }
-    append_int(text, labels[e].value);
-    text += '\n';
-    flush_block(out, text);
+    for (int v : elements[e]) t.i(v + 1);
+    t.i(labels[e].value);
+    t.end_line();
   }
-  out << text;
 }
 
 /// TetrahedraP2, TrianglesP2 and EdgesP2: the vertices, then the mid nodes
@@ -73,21 +52,18 @@ void write_medit(const TetMesh& mesh, std::ostream& out) {
   for (std::size_t c = 0; c < mesh.corner_vertices.size(); ++c) {
     vertex_ref[mesh.corner_vertices[c]] = mesh.corner_ids[c].value;
   }
-  std::string line;
-  line.reserve(kBlock + 256);
-  for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
-    const Point3& p = mesh.vertices[i];
-    append_double(line, p.x);
-    line += ' ';
-    append_double(line, p.y);
-    line += ' ';
-    append_double(line, p.z);
-    line += ' ';
-    append_int(line, vertex_ref[i]);
-    line += '\n';
-    flush_block(out, line);
+  {
+    io_detail::NumberTokens t(out, false);
+    for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+      const Point3& p = mesh.vertices[i];
+      t.d(p.x);
+      t.d(p.y);
+      t.d(p.z);
+      t.i(vertex_ref[i]);
+      t.end_line();
+    }
   }
-  out << line << '\n';
+  out << '\n';
   if (is_second_order(mesh)) {
     write_p2_sections(out, mesh);
   } else {
@@ -100,14 +76,12 @@ void write_medit(const TetMesh& mesh, std::ostream& out) {
     }
   }
   if (!mesh.corner_vertices.empty()) {
-    line = "\nCorners\n";
-    append_int(line, static_cast<long long>(mesh.corner_vertices.size()));
-    line += '\n';
+    out << "\nCorners\n" << mesh.corner_vertices.size() << '\n';
+    io_detail::NumberTokens t(out, false);
     for (int v : mesh.corner_vertices) {
-      append_int(line, v + 1);
-      line += '\n';
+      t.i(v + 1);
+      t.end_line();
     }
-    out << line;
   }
   out << "\nEnd\n";
   if (!out) throw OutputError("write_medit: the output stream failed");

@@ -1,5 +1,6 @@
-// The numbers of a Gmsh MSH 4.1 section, as text or in Gmsh's binary layout.
-// Text: tokens separated by one space, each line ended by end_line(). Binary:
+// Numbers written in lines of text (the Medit writer, text MSH) or in Gmsh's
+// binary layout. Text: tokens separated by one space, each line ended by
+// end_line(), doubles as the shortest text that reads back the same. Binary:
 // int as 4 bytes, size_t as 8, double as 8, in the machine's byte order (the
 // $MeshFormat section tells readers which, with the int 1); end_line() writes
 // nothing. Buffered; flush() before writing to the stream directly.
@@ -14,12 +15,12 @@
 
 namespace rdmesh::io_detail {
 
-class MshTokens {
+class NumberTokens {
  public:
-  MshTokens(std::ostream& out, bool binary) : out_(out), binary_(binary) {}
-  MshTokens(const MshTokens&) = delete;
-  MshTokens& operator=(const MshTokens&) = delete;
-  ~MshTokens() { flush(); }
+  NumberTokens(std::ostream& out, bool binary) : out_(out), binary_(binary) {}
+  NumberTokens(const NumberTokens&) = delete;
+  NumberTokens& operator=(const NumberTokens&) = delete;
+  ~NumberTokens() { flush(); }
 
   bool binary() const { return binary_; }
 
