@@ -3,6 +3,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <algorithm>
+#include <utility>
 
 #include "rdmesh/parallel_for.h"
 #include "tet_shape.h"
@@ -65,32 +66,54 @@ TetTopology::TetTopology(const TetMesh& mesh, int threads)
   });
   // Each vertex's list sized once (a few spare places for the flips to come):
   // growing millions of small lists by doubling costs more than the sweeps.
-  std::vector<int> count(points_.size(), 0);
-  for (const Tet& t : tets_)
-    for (const int v : t) ++count[v];
-  for (std::size_t v = 0; v < incident_.size(); ++v)
-    incident_[v].reserve(count[v] + kSpareIncidences);
-  for (std::size_t t = 0; t < n; ++t)
-    for (const int v : tets_[t]) incident_[v].push_back(static_cast<int>(t));
+  // The tetrahedra in a few ranges, each counted and then written by one thread
+  // at its place in the lists: every list holds its tetrahedra in order,
+  // whatever the threads.
+  const std::size_t parts = std::min<std::size_t>(kIncidenceParts, std::max<std::size_t>(1, n));
+  const std::size_t vertices = points_.size();
+  std::vector<std::vector<int>> place(parts, std::vector<int>(vertices, 0));
+  const auto range = [&](std::size_t k) { return std::pair(n * k / parts, n * (k + 1) / parts); };
+  parallel_tasks(parts, threads, [&](std::size_t k) {
+    const auto [begin, end] = range(k);
+    for (std::size_t t = begin; t < end; ++t)
+      for (const int v : tets_[t]) ++place[k][v];
+  });
+  parallel_for(vertices, threads, [&](std::size_t v) {
+    int count = 0;
+    for (std::size_t k = 0; k < parts; ++k) count += std::exchange(place[k][v], count);
+    incident_[v].reserve(count + kSpareIncidences);
+    incident_[v].resize(count);
+  });
+  parallel_tasks(parts, threads, [&](std::size_t k) {
+    const auto [begin, end] = range(k);
+    for (std::size_t t = begin; t < end; ++t)
+      for (const int v : tets_[t]) incident_[v][place[k][v]++] = static_cast<int>(t);
+  });
   faces_.reserve(mesh.triangles.size());
-  edges_.reserve(mesh.triangles.size() * 3 / 2 + mesh.edges.size());
+  edges_.reserve(mesh.triangles.size() * 3 + mesh.edges.size());
   for (const auto& f : mesh.triangles) {
-    faces_.insert(face_key(f[0], f[1], f[2]));
-    for (const auto& e : kTriangleEdges) edges_.insert(edge_key(f[e[0]], f[e[1]]));
+    faces_.push_back(face_key(f[0], f[1], f[2]));
+    for (const auto& e : kTriangleEdges) edges_.push_back(edge_key(f[e[0]], f[e[1]]));
     for (const int v : f) fixed_[v] = 1;
   }
   for (const auto& e : mesh.edges) {
-    edges_.insert(edge_key(e[0], e[1]));
+    edges_.push_back(edge_key(e[0], e[1]));
     fixed_[e[0]] = fixed_[e[1]] = 1;
+  }
+  for (std::vector<Key>* keys : {&faces_, &edges_}) {
+    std::sort(keys->begin(), keys->end());
+    keys->erase(std::unique(keys->begin(), keys->end()), keys->end());
   }
   for (const int v : mesh.corner_vertices) fixed_[v] = 1;
 }
 
 bool TetTopology::constrained_face(int a, int b, int c) const {
-  return faces_.count(face_key(a, b, c)) > 0;
+  return std::binary_search(faces_.begin(), faces_.end(), face_key(a, b, c));
 }
 
-bool TetTopology::constrained_edge(int a, int b) const { return edges_.count(edge_key(a, b)) > 0; }
+bool TetTopology::constrained_edge(int a, int b) const {
+  return std::binary_search(edges_.begin(), edges_.end(), edge_key(a, b));
+}
 
 std::vector<int> TetTopology::tets_with_edge(int a, int b) const {
   std::vector<int> out;
