@@ -21,8 +21,10 @@ template <std::size_t N, class LabelT>
 void write_section(std::ostream& out, const char* keyword,
                    const std::vector<std::array<int, N>>& elements,
                    const std::vector<LabelT>& labels) {
-  out << keyword << '\n' << elements.size() << '\n';
-  io_detail::NumberTokens t(out, false);
+  out << keyword << '\n';
+  io_detail::NumberTokens t(out, false);  // numbers whatever the stream's locale
+  t.z(static_cast<long long>(elements.size()));
+  t.end_line();
   for (std::size_t e = 0; e < elements.size(); ++e) {
     for (int v : elements[e]) t.i(v + 1);
     t.i(labels[e].value);
@@ -47,13 +49,15 @@ void write_p2_sections(std::ostream& out, const TetMesh& mesh) {
 
 void write_medit(const TetMesh& mesh, std::ostream& out) {
   io_detail::check_mesh(mesh);
-  out << "MeshVersionFormatted 2\n\nDimension 3\n\nVertices\n" << mesh.vertices.size() << '\n';
+  out << "MeshVersionFormatted 2\n\nDimension 3\n\nVertices\n";
   std::vector<int> vertex_ref(mesh.vertices.size(), 0);
   for (std::size_t c = 0; c < mesh.corner_vertices.size(); ++c) {
     vertex_ref[mesh.corner_vertices[c]] = mesh.corner_ids[c].value;
   }
   {
     io_detail::NumberTokens t(out, false);
+    t.z(static_cast<long long>(mesh.vertices.size()));
+    t.end_line();
     for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
       const Point3& p = mesh.vertices[i];
       t.d(p.x);
@@ -76,8 +80,10 @@ void write_medit(const TetMesh& mesh, std::ostream& out) {
     }
   }
   if (!mesh.corner_vertices.empty()) {
-    out << "\nCorners\n" << mesh.corner_vertices.size() << '\n';
+    out << "\nCorners\n";
     io_detail::NumberTokens t(out, false);
+    t.z(static_cast<long long>(mesh.corner_vertices.size()));
+    t.end_line();
     for (int v : mesh.corner_vertices) {
       t.i(v + 1);
       t.end_line();

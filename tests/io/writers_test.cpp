@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <locale>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -92,6 +93,44 @@ TEST(Writers, OutputIsDeterministic) {
     write(mesh, b);
     EXPECT_EQ(a.str(), b.str());
     EXPECT_FALSE(a.str().empty());
+  }
+}
+
+/// Thousands grouped with commas, as some user locales do.
+struct Grouping : std::numpunct<char> {
+  char do_thousands_sep() const override { return ','; }
+  std::string do_grouping() const override { return "\3"; }
+};
+
+TEST(Writers, NumbersDoNotFollowTheStreamsLocale) {
+  // 300 copies of the two cubes side by side: thousands of vertices and tetrahedra.
+  const TetMesh one = jittered_mesh();
+  TetMesh mesh = one;
+  for (int k = 1; k < 300; ++k) {
+    const int shift = static_cast<int>(mesh.vertices.size());
+    for (const Point3& p : one.vertices) mesh.vertices.push_back(p + Point3{3.0 * k, 0, 0});
+    for (auto t : one.tets) {
+      for (int& v : t) v += shift;
+      mesh.tets.push_back(t);
+    }
+    mesh.tet_subdomain.insert(mesh.tet_subdomain.end(), one.tet_subdomain.begin(),
+                              one.tet_subdomain.end());
+    for (auto t : one.triangles) {
+      for (int& v : t) v += shift;
+      mesh.triangles.push_back(t);
+    }
+    mesh.triangle_patch.insert(mesh.triangle_patch.end(), one.triangle_patch.begin(),
+                               one.triangle_patch.end());
+  }
+  ASSERT_GT(mesh.tets.size(), 1000u);
+  for (auto write : {write_medit, write_gmsh41, write_vtu}) {
+    std::ostringstream plain, grouped;
+    grouped.imbue(std::locale(std::locale::classic(), new Grouping));
+    write(mesh, plain);
+    write(mesh, grouped);
+    const std::string a = grouped.str(), b = plain.str();
+    const auto at = std::mismatch(a.begin(), a.end(), b.begin(), b.end()).first - a.begin();
+    EXPECT_EQ(a, b) << "differs at byte " << at << ": " << a.substr(at > 40 ? at - 40 : 0, 80);
   }
 }
 
