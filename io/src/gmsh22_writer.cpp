@@ -39,6 +39,8 @@ void write_elements(std::string& text, long long& tag, int gmsh_type, const Elem
 
 void write_gmsh22(const TetMesh& mesh, std::ostream& out) {
   io_detail::check_mesh(mesh);
+  // A locale grouping thousands wrote the node count as "3,600".
+  const io_detail::ClassicLocale classic(out);
   out << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n";
   const std::vector<io_detail::Label> levels[4] = {
       io_detail::corner_labels(mesh), io_detail::curve_labels(mesh), io_detail::patch_labels(mesh),

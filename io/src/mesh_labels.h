@@ -3,6 +3,8 @@
 #pragma once
 
 #include <charconv>
+#include <locale>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -76,6 +78,22 @@ inline void append_double(std::string& s, double v) {
   auto res = std::to_chars(buf, buf + sizeof buf, v);
   s.append(buf, static_cast<std::size_t>(res.ptr - buf));
 }
+
+/// While alive, `out` writes numbers in the "C" form (no thousands grouping,
+/// a point for decimals) whatever locale the caller gave it; the caller's
+/// locale comes back at the end. For writers that put numbers through `<<`.
+class ClassicLocale {
+ public:
+  explicit ClassicLocale(std::ostream& out)
+      : out_(out), before_(out.imbue(std::locale::classic())) {}
+  ClassicLocale(const ClassicLocale&) = delete;
+  ClassicLocale& operator=(const ClassicLocale&) = delete;
+  ~ClassicLocale() { out_.imbue(before_); }
+
+ private:
+  std::ostream& out_;
+  std::locale before_;
+};
 
 /// Appends an integer in decimal.
 inline void append_int(std::string& s, long long v) {

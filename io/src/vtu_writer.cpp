@@ -9,7 +9,6 @@
 // so that a mesh without them gives the same file as before they existed.
 #include <array>
 #include <charconv>
-#include <locale>
 #include <ostream>
 #include <set>
 #include <string>
@@ -243,13 +242,8 @@ void write_field_data(std::ostream& out, const TetMesh& mesh) {
 
 void write_vtu_file(const TetMesh& mesh, std::ostream& out, bool binary) {
   io_detail::check_mesh(mesh);
-  // Counts and numbers in the "C" form whatever the caller's locale (one that
-  // groups thousands wrote NumberOfPoints="3,600"); the caller's comes back.
-  struct ClassicLocale {
-    std::ostream& out;
-    std::locale before = out.imbue(std::locale::classic());
-    ~ClassicLocale() { out.imbue(before); }
-  } classic{out};
+  // A locale grouping thousands wrote NumberOfPoints="3,600".
+  const io_detail::ClassicLocale classic(out);
   out << "<?xml version=\"1.0\"?>\n"
          "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
          "header_type=\"UInt64\""

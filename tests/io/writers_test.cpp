@@ -123,7 +123,8 @@ TEST(Writers, NumbersDoNotFollowTheStreamsLocale) {
                                one.triangle_patch.end());
   }
   ASSERT_GT(mesh.tets.size(), 1000u);
-  for (auto write : {write_medit, write_gmsh41, write_vtu}) {
+  for (auto write : {write_medit, write_gmsh41, write_gmsh41_binary, write_gmsh22, write_vtu,
+                     write_vtu_binary}) {
     std::ostringstream plain, grouped;
     grouped.imbue(std::locale(std::locale::classic(), new Grouping));
     write(mesh, plain);
