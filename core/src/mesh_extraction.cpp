@@ -2,8 +2,10 @@
 // facets), each facet once, oriented towards its side of smaller label, and
 // the edges of D|L in curve order with the corners. Surface only: the
 // restricted facets alone, oriented consistently piece by piece.
+#include <atomic>
 #include <unordered_map>
 
+#include "rdmesh/parallel_for.h"
 #include "rdmesh/triangle_mesh_check.h"
 #include "refiner.h"
 
@@ -34,42 +36,83 @@ TetMesh Refiner::extract_mesh() {
   auto emits_triangle = [](Cell_handle c, int i, int label) {
     return c->info().facet_patch[i] != kNotRestricted && !(c->neighbor(i)->info().label > label);
   };
-  // Exact sizes first: grown by doubling, the arrays held up to twice their
-  // size, and a reallocation both copies at once, at the run's peak (the
-  // triangulation is still alive here).
-  std::size_t tets = 0, triangles = 0;
-  for (auto c = tr_.finite_cells_begin(); c != tr_.finite_cells_end(); ++c) {
-    const int label = c->info().label;
-    if (label == kOutside.value) continue;
+  auto in_domain = [this](Cell_handle c) {
+    return c->info().label != kOutside.value && !tr_.is_infinite(c);
+  };
+  // The domain cells in container order, cut into runs of kParallelChunk
+  // (where each run starts: bounds that depend on the triangulation alone).
+  // The runs are then read on the run's threads, each writing its own part of
+  // arrays sized exactly beforehand (grown by doubling, they held up to twice
+  // their size, at the run's peak: the triangulation is still alive here).
+  std::vector<Triangulation::All_cells_iterator> starts;
+  std::size_t tets = 0;
+  for (auto c = tr_.all_cells_begin(); c != tr_.all_cells_end(); ++c) {
+    if (!in_domain(c)) continue;
+    if (tets % kParallelChunk == 0) starts.push_back(c);
     ++tets;
-    for (int i = 0; i < 4; ++i) triangles += emits_triangle(c, i, label);
   }
-  mesh.tets.reserve(tets);
-  mesh.tet_subdomain.reserve(tets);
-  mesh.triangles.reserve(triangles);
-  mesh.triangle_patch.reserve(triangles);
-  mesh.vertices.reserve(tr_.number_of_vertices());
-  for (auto c = tr_.finite_cells_begin(); c != tr_.finite_cells_end(); ++c) {
-    const int label = c->info().label;
-    if (label == kOutside.value) continue;
-    // CGAL cells are positively oriented: det(v1-v0, v2-v0, v3-v0) > 0.
-    mesh.tets.push_back({index_of(c->vertex(0)), index_of(c->vertex(1)), index_of(c->vertex(2)),
-                         index_of(c->vertex(3))});
-    mesh.tet_subdomain.push_back(SubdomainId{label});
-    for (int i = 0; i < 4; ++i) {
-      if (!emits_triangle(c, i, label)) continue;
-      const PatchId patch = c->info().facet_patch[i];
-      Vertex_handle a = c->vertex((i + 1) & 3), b = c->vertex((i + 2) & 3),
-                    d = c->vertex((i + 3) & 3);
-      // Normal (b-a) x (d-a) must point away from this cell's vertex i.
-      if (CGAL::orientation(a->point().point(), b->point().point(), d->point().point(),
-                            c->vertex(i)->point().point()) == CGAL::POSITIVE) {
-        std::swap(b, d);
-      }
-      mesh.triangles.push_back({index_of(a), index_of(b), index_of(d)});
-      mesh.triangle_patch.push_back(patch);
+  // Calls body(cell, position) for the domain cells of run k, in order.
+  auto for_run = [&](std::size_t k, auto&& body) {
+    const std::size_t end = std::min(tets, (k + 1) * kParallelChunk);
+    auto c = starts[k];
+    for (std::size_t t = k * kParallelChunk; t < end; ++c) {
+      if (in_domain(c)) body(Cell_handle(c), t++);
     }
+  };
+  const int threads = options_.threads;
+  // The vertices of domain cells are marked (index -1 -> 0, written by any
+  // run that holds one: the same value whoever writes) and each run counts
+  // the triangles it emits.
+  std::vector<std::size_t> triangle_start(starts.size() + 1, 0);
+  parallel_tasks(starts.size(), threads, [&](std::size_t k) {
+    std::size_t triangles = 0;
+    for_run(k, [&](Cell_handle c, std::size_t) {
+      const int label = c->info().label;
+      for (int i = 0; i < 4; ++i) {
+        std::atomic_ref<int>(c->vertex(i)->info().index).store(0, std::memory_order_relaxed);
+        triangles += emits_triangle(c, i, label);
+      }
+    });
+    triangle_start[k + 1] = triangles;
+  });
+  for (std::size_t k = 0; k < starts.size(); ++k) triangle_start[k + 1] += triangle_start[k];
+  // Output vertices in the triangulation's order.
+  std::size_t used = 0;
+  for (auto v = tr_.finite_vertices_begin(); v != tr_.finite_vertices_end(); ++v)
+    used += v->info().index == 0;
+  mesh.vertices.reserve(used);
+  for (auto v = tr_.finite_vertices_begin(); v != tr_.finite_vertices_end(); ++v) {
+    if (v->info().index < 0) continue;
+    v->info().index = static_cast<int>(mesh.vertices.size());
+    mesh.vertices.push_back(to_point3(v->point()));
   }
+  mesh.tets.resize(tets);
+  mesh.tet_subdomain.resize(tets);
+  mesh.triangles.resize(triangle_start.back());
+  mesh.triangle_patch.resize(triangle_start.back());
+  parallel_tasks(starts.size(), threads, [&](std::size_t k) {
+    std::size_t triangle = triangle_start[k];
+    for_run(k, [&](Cell_handle c, std::size_t t) {
+      const int label = c->info().label;
+      // CGAL cells are positively oriented: det(v1-v0, v2-v0, v3-v0) > 0.
+      mesh.tets[t] = {c->vertex(0)->info().index, c->vertex(1)->info().index,
+                      c->vertex(2)->info().index, c->vertex(3)->info().index};
+      mesh.tet_subdomain[t] = SubdomainId{label};
+      for (int i = 0; i < 4; ++i) {
+        if (!emits_triangle(c, i, label)) continue;
+        Vertex_handle a = c->vertex((i + 1) & 3), b = c->vertex((i + 2) & 3),
+                      d = c->vertex((i + 3) & 3);
+        // Normal (b-a) x (d-a) must point away from this cell's vertex i.
+        if (CGAL::orientation(a->point().point(), b->point().point(), d->point().point(),
+                              c->vertex(i)->point().point()) == CGAL::POSITIVE) {
+          std::swap(b, d);
+        }
+        mesh.triangles[triangle] = {a->info().index, b->info().index, d->info().index};
+        mesh.triangle_patch[triangle] = c->info().facet_patch[i];
+        ++triangle;
+      }
+    });
+  });
   extract_features(mesh);
   return mesh;
 }
