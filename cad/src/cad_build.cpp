@@ -92,7 +92,7 @@ void fuse_solids(const ReadShape& read, CadOracle::Model& m, const std::string& 
     throw InputError(source, "the model's solids have no volume (open or flat shells)");
   }
   if (input.size() == 1) {
-    m.pieces.push_back({input[0], SubdomainId(1), {}});
+    m.pieces.push_back({input[0], SubdomainId(1), {}, std::fabs(volume[0])});
     m.shape = input[0];
     m.face_styles = read.face_styles;
     return;
@@ -152,7 +152,10 @@ void fuse_solids(const ReadShape& read, CadOracle::Model& m, const std::string& 
     for (const TopoDS_Shape& s : parts) {
       if (s.ShapeType() != TopAbs_SOLID || taken.Contains(s)) continue;  // overlap: first wins
       taken.Add(s);
-      m.pieces.push_back({TopoDS::Solid(s), SubdomainId(static_cast<int>(i) + 1), {}});
+      GProp_GProps props;
+      BRepGProp::VolumeProperties(s, props);
+      m.pieces.push_back(
+          {TopoDS::Solid(s), SubdomainId(static_cast<int>(i) + 1), {}, props.Mass()});
     }
   }
   std::set<int> kept;

@@ -119,6 +119,10 @@ struct SolidPiece {
   TopoDS_Solid solid;
   SubdomainId id;
   Box3 box;
+  /// OpenCASCADE's exact volume (BRepGProp), found once when the model is
+  /// built: sizes and the fidelity check ask for it again, and on B-spline
+  /// solids it takes a good part of a second.
+  double volume = 0;
 };
 
 /// How a face's crossings with a line are computed (face_intersector.cpp).
