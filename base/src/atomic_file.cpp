@@ -1,4 +1,5 @@
-// Atomic file write: temp file (O_EXCL) in the target directory, fsync, rename.
+// Atomic file write: temp file (O_EXCL) in the target directory, written
+// behind as it goes, fsync, rename.
 #include "rdmesh/atomic_file.h"
 
 #include <fcntl.h>
@@ -6,8 +7,9 @@
 
 #include <cerrno>
 #include <filesystem>
-#include <fstream>
+#include <ostream>
 #include <random>
+#include <streambuf>
 #include <system_error>
 #include <utility>
 #include <vector>
@@ -48,30 +50,88 @@ std::string create_temp_file(const std::string& path) {
                     errno_message(last_error) + ")");
 }
 
-/// Flushes the file's data to disk so that the rename never exposes an empty file after a crash.
-void sync_file(const std::string& name, const std::string& path) {
-  const int fd = ::open(name.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0 || ::fsync(fd) != 0) {
-    const int err = errno;
-    if (fd >= 0) ::close(fd);
-    throw OutputError(path + ": cannot sync the written data (" + errno_message(err) + ")");
-  }
-  ::close(fd);
-}
+/// An output stream buffer over a file descriptor that asks the kernel to
+/// start writing each kWriteBehind bytes to disk as soon as they are written
+/// (sync_file_range), so that the fsync before the rename finds little left to
+/// do: for a 45 MB mesh the fsync alone took 0.14 s, at the end of the run.
+class WriteBehindBuf : public std::streambuf {
+ public:
+  static constexpr std::size_t kWriteBehind = std::size_t{4} << 20;
 
+  explicit WriteBehindBuf(int fd) : fd_(fd), buffer_(1 << 16) {
+    setp(buffer_.data(), buffer_.data() + buffer_.size());
+  }
+  WriteBehindBuf(const WriteBehindBuf&) = delete;
+  WriteBehindBuf& operator=(const WriteBehindBuf&) = delete;
+
+  bool failed() const { return failed_; }
+
+ protected:
+  int_type overflow(int_type ch) override {
+    if (!drain()) return traits_type::eof();
+    if (traits_type::eq_int_type(ch, traits_type::eof())) return traits_type::not_eof(ch);
+    *pptr() = traits_type::to_char_type(ch);
+    pbump(1);
+    return ch;
+  }
+  int sync() override { return drain() ? 0 : -1; }
+
+ private:
+  /// Writes the buffer out; false (and failed()) on an error.
+  bool drain() {
+    const char* p = pbase();
+    while (p < pptr() && !failed_) {
+      const ssize_t n = ::write(fd_, p, static_cast<std::size_t>(pptr() - p));
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) {
+        failed_ = true;
+        break;
+      }
+      p += n;
+      written_ += static_cast<std::size_t>(n);
+    }
+    setp(buffer_.data(), buffer_.data() + buffer_.size());
+    if (!failed_ && written_ - started_ >= kWriteBehind) {
+      // Only a hint: where the kernel cannot, the fsync does it all.
+      (void)::sync_file_range(fd_, static_cast<off_t>(started_),
+                              static_cast<off_t>(written_ - started_), SYNC_FILE_RANGE_WRITE);
+      started_ = written_;
+    }
+    return !failed_;
+  }
+
+  int fd_;
+  std::vector<char> buffer_;
+  std::size_t written_ = 0;  ///< bytes handed to the kernel
+  std::size_t started_ = 0;  ///< bytes whose write-back was asked for
+  bool failed_ = false;
+};
+
+/// Writes the file with `writer` and flushes its data to disk, so that the
+/// rename never exposes an empty file after a crash.
 void write_temp(const std::string& temp, const std::string& path,
                 const std::function<void(std::ostream&)>& writer) {
-  std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-  if (!out) throw OutputError(path + ": cannot open temporary file " + temp);
-  std::vector<char> buffer(1 << 16);
-  out.rdbuf()->pubsetbuf(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+  const int fd = ::open(temp.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+  if (fd < 0) {
+    throw OutputError(path + ": cannot open temporary file " + temp + " (" + errno_message(errno) +
+                      ")");
+  }
+  struct Closer {
+    int fd;
+    ~Closer() { ::close(fd); }
+  } closer{fd};
+  WriteBehindBuf buffer(fd);
+  std::ostream out(&buffer);
   try {
     writer(out);
   } catch (const OutputError&) {
     throw OutputError(path + ": write failed (disk full or I/O error?)");
   }
-  out.close();
-  if (!out) throw OutputError(path + ": write failed (disk full or I/O error?)");
+  out.flush();
+  if (!out || buffer.failed()) throw OutputError(path + ": write failed (disk full or I/O error?)");
+  if (::fsync(fd) != 0) {
+    throw OutputError(path + ": cannot sync the written data (" + errno_message(errno) + ")");
+  }
 }
 
 }  // namespace
@@ -88,7 +148,6 @@ StagedFile::StagedFile(const std::string& path, const std::function<void(std::os
   temp_ = create_temp_file(path);
   try {
     write_temp(temp_, path, writer);
-    sync_file(temp_, path);
   } catch (...) {
     discard();
     throw;
