@@ -5,7 +5,6 @@
 
 #include "level_curves.h"
 #include "level_facets.h"
-#include "optimize/exudation_lanes.h"
 #include "rdmesh/debug_assert.h"
 #include "simplex_geometry.h"
 
@@ -67,9 +66,9 @@ bool CellLevel::fits_lane(Cell_handle c) const {
   return lanes_on_ && c->info().squared_radius < lane_max_squared_radius_;
 }
 
-int CellLevel::owner(Cell_handle c) {
+int CellLevel::owner(Cell_handle c) const {
   for (int lane = 0; lane < 2; ++lane) {
-    if (in_lane(c, lane)) return lane;
+    if (cut_->in_lane(c, lane)) return lane;
   }
   return -1;
 }

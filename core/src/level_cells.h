@@ -14,6 +14,7 @@
 #include "bucket_queue.h"
 #include "element_entry.h"
 #include "insertion.h"
+#include "lane_cut.h"
 #include "rdmesh/criteria.h"
 #include "restricted_complex.h"
 #include "violation.h"
@@ -45,9 +46,10 @@ class CellLevel {
   /// all of whose vertices hold lane k's bit to lane k's queue.
   /// Cells whose ball has a squared radius of `max_squared_radius` or more
   /// stay in the level's queue: their zones reach across the cut.
-  void set_lanes(bool on, double max_squared_radius) {
+  void set_lanes(bool on, double max_squared_radius, const LaneCut* cut) {
     lanes_on_ = on;
     lane_max_squared_radius_ = max_squared_radius;
+    cut_ = cut;
   }
   BucketQueue<ElementEntry>& lane_queue(int lane) { return lanes_[lane]; }
   const BucketQueue<ElementEntry>& lane_queue(int lane) const { return lanes_[lane]; }
@@ -93,7 +95,7 @@ class CellLevel {
   /// Lanes on and cell c's ball small enough for a lane.
   bool fits_lane(Cell_handle c) const;
   /// The lane that owns all four vertices of c, or -1.
-  static int owner(Cell_handle c);
+  int owner(Cell_handle c) const;
 
   const RestrictedComplex& complex_;
   const Criteria& criteria_;
@@ -103,6 +105,7 @@ class CellLevel {
   BucketQueue<ElementEntry> lanes_[2];
   bool lanes_on_ = false;
   double lane_max_squared_radius_ = 0;
+  const LaneCut* cut_ = nullptr;  ///< the lanes' current cut (RefinementLanes)
 };
 
 }  // namespace rdmesh::detail

@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "level_curves.h"
-#include "optimize/exudation_lanes.h"
 #include "rdmesh/debug_assert.h"
 #include "simplex_geometry.h"
 
@@ -77,10 +76,10 @@ bool FacetLevel::fits_lane(Cell_handle c, int i) const {
   return complex_.facet_power(c, i, center) < lane_max_squared_radius_;
 }
 
-int FacetLevel::owner(Cell_handle c, int i) {
+int FacetLevel::owner(Cell_handle c, int i) const {
   const Cell_handle n = c->neighbor(i);
   for (int lane = 0; lane < 2; ++lane) {
-    if (in_lane(c, lane) && in_lane(n, lane)) return lane;
+    if (cut_->in_lane(c, lane) && cut_->in_lane(n, lane)) return lane;
   }
   return -1;
 }

@@ -17,6 +17,7 @@
 
 #include "element_entry.h"
 #include "insertion.h"
+#include "lane_cut.h"
 #include "rdmesh/criteria.h"
 #include "restricted_complex.h"
 #include "violation.h"
@@ -46,9 +47,10 @@ class FacetLevel {
   /// facet whose two cells lie in lane k to lane k's queue, unless its surface
   /// ball has a squared radius of `max_squared_radius` or more (its centre's
   /// zone reaches across the cut).
-  void set_lanes(bool on, double max_squared_radius) {
+  void set_lanes(bool on, double max_squared_radius, const LaneCut* cut) {
     lanes_on_ = on;
     lane_max_squared_radius_ = max_squared_radius;
+    cut_ = cut;
   }
   using Queue = std::priority_queue<ElementEntry>;
   Queue& lane_queue(int lane) { return lanes_[lane]; }
@@ -91,7 +93,7 @@ class FacetLevel {
   /// Lanes on and the surface ball of facet (c, i) small enough for a lane.
   bool fits_lane(Cell_handle c, int i) const;
   /// The lane that owns both cells of facet (c, i), or -1.
-  static int owner(Cell_handle c, int i);
+  int owner(Cell_handle c, int i) const;
 
   const RestrictedComplex& complex_;
   const Criteria& criteria_;
@@ -101,6 +103,7 @@ class FacetLevel {
   std::vector<ElementEntry> parked_;
   bool lanes_on_ = false;
   double lane_max_squared_radius_ = 0;
+  const LaneCut* cut_ = nullptr;  ///< the lanes' current cut (RefinementLanes)
 };
 
 }  // namespace rdmesh::detail

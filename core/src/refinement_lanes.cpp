@@ -101,24 +101,19 @@ RefinementLanes::RefinementLanes(RestrictedComplex& complex, CellLevel& cells, F
 
 void RefinementLanes::start() {
   axes_ = axes_by_extent(tr_);
-  axis_ = axes_[0];
+  const int axis = axes_[0];
   std::vector<double> values;
   for (auto v = tr_.finite_vertices_begin(); v != tr_.finite_vertices_end(); ++v)
-    values.push_back(coordinate(to_point3(v->point()), axis_));
-  split_ = median(values);
-  assign_lanes_at(tr_, axis_, split_);
-  double lo = split_, hi = split_;
+    values.push_back(coordinate(to_point3(v->point()), axis));
+  cut_ = cut_at(tr_, axis, median(values));
+  double lo = cut_.split, hi = cut_.split;
   for (const double x : values) {
     lo = std::min(lo, x);
     hi = std::max(hi, x);
   }
   const double reach = (hi - lo) / kCoarse;
-  cells_.set_lanes(true, reach * reach);
-  facets_.set_lanes(surface_, reach * reach);
-}
-
-void RefinementLanes::place(Vertex_handle v) const {
-  v->info().lane = lane_bit_at(to_point3(v->point()), axis_, split_);
+  cells_.set_lanes(true, reach * reach, &cut_);
+  facets_.set_lanes(surface_, reach * reach, &cut_);
 }
 
 bool RefinementLanes::pending() const {
@@ -160,12 +155,11 @@ bool RefinementLanes::round(RefinementStats& stats, const Deadline& deadline) {
       if (complex_.is_live(e.stamp)) entries.push_back(e);
     }
   }
-  axis_ = axes_[rounds_ % 2];
+  const int axis = axes_[rounds_ % 2];
   std::vector<double> values;
   values.reserve(entries.size());
-  for (const ElementEntry& e : entries) values.push_back(coordinate(centre_of(e), axis_));
-  split_ = median(values);
-  assign_lanes_at(tr_, axis_, split_);
+  for (const ElementEntry& e : entries) values.push_back(coordinate(centre_of(e), axis));
+  cut_ = cut_at(tr_, axis, median(values));
   // Oldest first, so that each queue's newest entries come out first, as before.
   for (auto e = entries.rbegin(); e != entries.rend(); ++e) {
     if (is_facet(*e)) {
@@ -174,9 +168,9 @@ bool RefinementLanes::round(RefinementStats& stats, const Deadline& deadline) {
         facets_.lane_queue(l).push(*e);
       else
         facets_.push(plain(*e));
-    } else if (in_lane(e->cell, 0)) {
+    } else if (cut_.in_lane(e->cell, 0)) {
       cells_.lane_queue(0).push(CellLevel::bucket_of(e->priority), *e);
-    } else if (in_lane(e->cell, 1)) {
+    } else if (cut_.in_lane(e->cell, 1)) {
       cells_.lane_queue(1).push(CellLevel::bucket_of(e->priority), *e);
     } else {
       cells_.push(plain(*e));
@@ -302,7 +296,7 @@ RefinementLanes::Outcome RefinementLanes::refine(Lane& lane, const ElementEntry&
   if (is_facet(e)) {
     const int i = facet_index(e);
     const Cell_handle n = c->neighbor(i);
-    if (!in_lane(c, lane.id) || !in_lane(n, lane.id)) return Outcome::kDeferred;
+    if (!cut_.in_lane(c, lane.id) || !cut_.in_lane(n, lane.id)) return Outcome::kDeferred;
     if (!facets_.violation(c, i)) return Outcome::kDropped;
     const Point3 center = c->info().surface_center[i];
     // The protecting balls' tests (CurveLevel::keeps_facet_centre) need the
@@ -319,7 +313,7 @@ RefinementLanes::Outcome RefinementLanes::refine(Lane& lane, const ElementEntry&
     if (done == Outcome::kInserted) ++lane.inserted_facets;
     return done;
   }
-  if (!in_lane(c, lane.id)) return Outcome::kDeferred;
+  if (!cut_.in_lane(c, lane.id)) return Outcome::kDeferred;
   if (!cells_.violation(c)) return Outcome::kDropped;
   if (curves_.keeps_cell_centre(c)) return Outcome::kDropped;
   return insert(lane, c->info().circumcenter, c->info().squared_radius, c, VertexInfo{});
@@ -330,17 +324,17 @@ RefinementLanes::Outcome RefinementLanes::insert(Lane& lane, const Point3& cente
                                                  const VertexInfo& info) {
   // A ball across the cut: its zone nearly always crosses too, and finding
   // that out costs a walk. The next round's cut is across another axis.
-  const double to_cut = coordinate(center, axis_) - split_;
+  const double to_cut = coordinate(center, cut_.axis) - cut_.split;
   if (to_cut * to_cut < kBallReach * kBallReach * squared_radius) return Outcome::kCrossed;
   const Weighted_point p = to_weighted(center);
   const Vertex_handle infinite = tr_.infinite_vertex();
   // The lane's own cells without features: the curve level has nothing to see
   // in the zone (no arc's ball holds a point whose zone has no curve vertex),
   // and nothing outside the lane is read or written. (Infinite cells are a
-  // lane's when the infinite vertex holds every lane, see assign_lanes_at:
+  // lane's when the infinite vertex holds every lane, see cut_at:
   // then its cell() is one that neither lane owns.)
   auto owned = [&](Cell_handle x) {
-    if (!in_lane(x, lane.id)) return false;
+    if (!cut_.in_lane(x, lane.id)) return false;
     for (int k = 0; k < 4; ++k) {
       const Vertex_handle w = x->vertex(k);
       if (w->info().dim() <= FeatureDim::kCurve || w->point().weight() != 0) return false;
@@ -375,7 +369,6 @@ RefinementLanes::Outcome RefinementLanes::insert(Lane& lane, const Point3& cente
   lane.vertices.pop_back();
   v->set_point(p);
   v->info() = info;
-  v->info().lane = lane_bit(lane.id);
   lane.hole.clear();
   for (const Triangulation::Facet& f : lane.boundary) lane.hole.push_back({f.first, f.second});
   lane.cone.build(tr_, lane.zone, lane.hole, v, &lane.pool, lane.created);

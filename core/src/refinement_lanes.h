@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "deadline.h"
+#include "lane_cut.h"
 #include "level_cells.h"
 #include "level_curves.h"
 #include "level_facets.h"
@@ -56,8 +57,6 @@ class RefinementLanes {
   /// turns the cell level's lanes on, and the facet level's (see the constructor).
   /// Before the first cells are queued.
   void start();
-  /// Gives a vertex the sequential steps inserted the bit of its lane.
-  void place(Vertex_handle v) const;
   /// Whether a lane has elements queued, or the levels parked some for a round.
   bool pending() const;
   /// One round: a new cut (alternating the two longest axes) through the
@@ -89,8 +88,7 @@ class RefinementLanes {
   int threads_;
   bool surface_;
   std::array<int, 3> axes_{0, 1, 2};
-  int axis_ = 0;
-  double split_ = 0;
+  LaneCut cut_;
   std::size_t rounds_ = 0;
   std::vector<ElementEntry> crossed_;  ///< entries whose zone crossed the last cut
 };

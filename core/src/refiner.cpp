@@ -161,7 +161,6 @@ void Refiner::stop_at_time_limit() {
 void Refiner::zone_found(const std::vector<Cell_handle>& zone) { curve_level_->zone_found(zone); }
 
 void Refiner::inserted(Vertex_handle v) {
-  lanes_.place(v);
   walk_.cells(v, new_cells_);
   const std::uint32_t first_new = complex_.next_stamp();
   // Each new cell's facet opposite v bounds the conflict zone: the cell
