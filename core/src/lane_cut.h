@@ -1,6 +1,6 @@
 // The cut of a refinement round (refinement_lanes.h): which lane a vertex,
 // hence a cell, belongs to, read from the vertices' points. Exudation stores
-// its lanes in the vertices (exudation_lanes.h); refinement does not, so a
+// this cut's sides in the vertices (assign_lanes_at); refinement does not, so a
 // round's new cut costs no pass over every vertex (a tenth of a second of
 // the rounds at 1 M tets, most of it on one thread at the end).
 #pragma once
@@ -17,7 +17,7 @@ struct LaneCut {
   double split = 0;
   Vertex_handle infinite;
   /// Whether the infinite vertex holds both lanes (cells across the hull may
-  /// be a lane's), set by cut_hull; else it holds none.
+  /// be a lane's), set by cut_at; else it holds none.
   bool infinite_in_lanes = false;
 
   /// Lane 0 holds the finite vertices below `split` along `axis`, lane 1

@@ -1,8 +1,9 @@
 #include "exudation_lanes.h"
 
 #include <algorithm>
-#include <iterator>
 #include <limits>
+
+#include "../lane_cut.h"
 
 namespace rdmesh::detail {
 namespace {
@@ -28,22 +29,11 @@ double median(std::vector<double>& values) {
 }
 
 void assign_lanes_at(Triangulation& tr, int axis, double split) {
+  // The refinement's cut (which reads the sides from the points), stored.
+  const LaneCut cut = cut_at(tr, axis, split);
   for (auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
-    v->info().lane = lane_bit(coordinate(v, axis) < split ? 0 : 1);
-  const Vertex_handle infinite = tr.infinite_vertex();
-  infinite->info().lane = kNoLane;
-  std::vector<Cell_handle> hull;
-  tr.incident_cells(infinite, std::back_inserter(hull));
-  for (const Cell_handle& c : hull) {
-    bool lane[2] = {false, false};
-    for (int k = 0; k < 4; ++k)
-      if (c->vertex(k) != infinite) lane[c->vertex(k)->info().lane == lane_bit(1)] = true;
-    if (lane[0] && lane[1]) {
-      infinite->set_cell(c);
-      infinite->info().lane = kAnyLane;
-      return;
-    }
-  }
+    v->info().lane = lane_bit(cut.holds(v, 1) ? 1 : 0);
+  cut.infinite->info().lane = cut.infinite_in_lanes ? kAnyLane : kNoLane;
 }
 
 std::array<int, 3> axes_by_extent(const Triangulation& tr) {

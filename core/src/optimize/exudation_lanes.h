@@ -48,10 +48,6 @@ void assign_lanes_at(Triangulation& tr, int axis, double split);
 inline double coordinate(const Point3& p, int axis) {
   return axis == 0 ? p.x : axis == 1 ? p.y : p.z;
 }
-/// The lane bit of a point for the cut at `split` on `axis`.
-inline std::uint8_t lane_bit_at(const Point3& p, int axis, double split) {
-  return lane_bit(coordinate(p, axis) < split ? 0 : 1);
-}
 /// The median of `values` (the upper one of an even count; 0 when empty),
 /// where a cut goes. Reorders them.
 double median(std::vector<double>& values);
