@@ -77,10 +77,7 @@ TetMesh Refiner::extract_mesh() {
   });
   for (std::size_t k = 0; k < starts.size(); ++k) triangle_start[k + 1] += triangle_start[k];
   // Output vertices in the triangulation's order.
-  std::size_t used = 0;
-  for (auto v = tr_.finite_vertices_begin(); v != tr_.finite_vertices_end(); ++v)
-    used += v->info().index == 0;
-  mesh.vertices.reserve(used);
+  mesh.vertices.reserve(tr_.number_of_vertices());
   for (auto v = tr_.finite_vertices_begin(); v != tr_.finite_vertices_end(); ++v) {
     if (v->info().index < 0) continue;
     v->info().index = static_cast<int>(mesh.vertices.size());
