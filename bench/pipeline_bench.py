@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
-"""Whole-pipeline benchmark: rdmesh with 1 and 2 threads vs Gmsh HXT with 1 and 2 threads.
+"""Whole-pipeline benchmark: rdmesh with 1 and 2 threads vs Gmsh HXT and CGAL Mesh_3.
 
-usage: pipeline_bench.py BUILD_DIR [DATA_DIR] [--repeat R] [--large] [--out TABLE.md]
+usage: pipeline_bench.py BUILD_DIR [DATA_DIR] [--repeat R] [--large] [--cgal PATH]
+                         [--out TABLE.md]
 
 Cases: the unit sphere (samples/sphere.json for rdmesh, an OpenCASCADE sphere
 for Gmsh) at rdmesh sizes 0.05 and 0.025 (about 150 k and 1.1 M tetrahedra;
@@ -10,22 +11,36 @@ gmsh_Zylkopf.stp and occtsample_ANC101.step) with rdmesh's default sizes. Gmsh
 runs at the size that gives about as many tets as rdmesh (issue 19 compares at
 the same element count): one calibration run at rdmesh's size (STEP: diagonal /
 20), scaled once by the cube root of the two counts; the case name gives the
-sphere's Gmsh size. The table has both counts, and microseconds per tet.
+sphere's Gmsh (and CGAL) size. The table has both counts, and microseconds per tet.
+
+CGAL Mesh_3 rows come from bench/rdmesh_cgal_pipeline (--cgal PATH, default
+BUILD_DIR/bench/rdmesh_cgal_pipeline, built in a -DRDMESH_BUILD_BENCH=ON tree;
+without it the CGAL rows are left out): make_mesh_3 with its default perturb and
+exude, sequential, and with CGAL::Parallel_tag on 2 TBB threads when the binary
+was built with TBB. Its size is calibrated to rdmesh's count as Gmsh's is. The
+sphere is the implicit x^2 + y^2 + z^2 - 1 in sphere.json's box [-1.2, 1.2]^3.
+CGAL cannot read STEP: its STEP rows mesh a closed triangle surface that Gmsh
+makes once per case, untimed (`gmsh FILE -2 -clmax h/3`, sharp edges above 60
+degrees protected), so they mesh a tessellation, not the exact B-rep, and the
+tessellation's time is not in CGAL's wall time.
 
 Each command is the whole run as a user starts it (read, mesh, write a Medit
 .mesh file; rdmesh also writes no report): `rdmesh IN -o OUT.mesh -q --threads
-N` and `gmsh IN -3 -algo hxt -nt N -o OUT.mesh`. The four commands of a case
-run one after the other, R times (default 3), alternating, and the fastest
-wall time of each counts. Peak memory is the child's maximum resident set
+N`, `gmsh IN -3 -algo hxt -nt N -o OUT.mesh` and `rdmesh_cgal_pipeline IN --size
+H [--parallel --threads 2] -o OUT.mesh`. The commands of a case run one after
+the other, R times (default 3), alternating, and the fastest wall time of each
+counts. Peak memory is the child's maximum resident set
 (/usr/bin/time -f %M). Tets and the minimum dihedral angle are read back from each .mesh
-file here, the same way for both tools (pure Python; slow on large meshes, not
-timed). The md5 column is the digest of rdmesh's output file of each thread
-count: equal digests across thread counts and repeats are the determinism
-claim. The ratio column is the wall time over Gmsh HXT's with the same thread
-count (< 1: rdmesh faster). Needs numpy (Debian python3-numpy, installed by
-scripts/install-deps.sh) to read the meshes back.
+file here, the same way for every tool (numpy; not timed). A tool that fails
+has a row "failed: " and its last line of stderr. The md5 column is the digest
+of rdmesh's output file of each thread count: equal digests across thread
+counts and repeats are the determinism claim. The ratio column is rdmesh's wall
+time over Gmsh HXT's with the same thread count (< 1: rdmesh faster). Needs
+numpy (Debian python3-numpy, installed by scripts/install-deps.sh) to read the
+meshes back.
 """
 import argparse
+import collections
 import hashlib
 import math
 import os
@@ -112,28 +127,65 @@ def md5(path):
     return h.hexdigest()
 
 
-def calibrated_h(args, rd_args, gmsh_run, h, scratch):
-    """Gmsh's size h scaled once by the cube root of the two counts, so that
-    Gmsh makes about as many tets as rdmesh with rd_args (None: rdmesh failed).
-    gmsh_run(h, out) runs Gmsh at size h and returns its exit status."""
-    out = os.path.join(scratch, "calibrate.mesh")
+def exit_status(cmd):
+    """The exit status of cmd, its output discarded (calibration runs, not timed)."""
+    return subprocess.run(cmd, capture_output=True).returncode
+
+
+def rdmesh_reference(args, rd_args, out):
+    """rdmesh with rd_args on 2 threads into out: the count every tool is
+    calibrated on. False, with a line on stderr, when it fails."""
     p = subprocess.run([args.rdmesh] + rd_args + ["-q", "--threads", "2", "-o", out],
                        capture_output=True, text=True)
     if p.returncode != 0:
-        print("%s: rdmesh failed (%s)" % (rd_args[0], p.stderr.strip()), file=sys.stderr)
-        return None
-    target = len(read_medit_tets(out)[1])
-    if gmsh_run(h, out) == 0:
+        print("%s: rdmesh failed (%s): skipped" % (os.path.basename(rd_args[0]), p.stderr.strip()),
+              file=sys.stderr)
+    return p.returncode == 0
+
+
+def calibrated_h(tool_run, h, target, out):
+    """The size h scaled once by the cube root of the counts, so that a tool
+    makes about `target` tets (h itself when that run fails or is empty).
+    tool_run(h, out) runs the tool once at size h and returns its exit status."""
+    if tool_run(h, out) == 0:
         got = len(read_medit_tets(out)[1])
         if got > 0:
             h *= (got / target) ** (1.0 / 3.0)
     return h
 
 
+# One case of the table: each tool's arguments before its output options. cgal is
+# None when there are no CGAL rows or CGAL cannot run (cgal_error says why).
+Case = collections.namedtuple("Case", "name rdmesh gmsh cgal cgal_error")
+# One row of the table; a tool that failed has only `failed`, why.
+Row = collections.namedtuple("Row", "case tool wall tets angle rss ratio digest failed",
+                             defaults=(None,) * 7)
+
+
+def cgal_args(args, cgal_input, h, target, out):
+    """CGAL's arguments at the size calibrated on rdmesh's `target` tets (one
+    sequential run at rdmesh's size h)."""
+    ch = calibrated_h(lambda size, dest: exit_status(
+        [args.cgal, cgal_input, "--size", repr(size), "-o", dest]), h, target, out)
+    return [cgal_input, "--size", repr(ch)]
+
+
+def cgal_surface(args, step, h, surface):
+    """Gmsh's closed triangle surface of a STEP file at -clmax h / 3, for CGAL (it
+    cannot read STEP); made once per case, not timed. "" or why it failed."""
+    p = subprocess.run([args.gmsh, step, "-2", "-clmax", repr(h / 3), "-o", surface],
+                       capture_output=True, text=True)
+    if p.returncode != 0 or not os.path.exists(surface):
+        lines = p.stderr.strip().splitlines() or p.stdout.strip().splitlines() or [""]
+        return "gmsh tessellation: exit %d %s" % (p.returncode, lines[-1])
+    return ""
+
+
 def cases(args, repo, scratch):
-    """Yields (name, rdmesh args, Gmsh args): Gmsh at the size that gives about
-    as many tets as rdmesh (issue 19 compares at the same element count)."""
+    """Yields the Cases: Gmsh and CGAL at the sizes that give about as many tets
+    as rdmesh (issue 19 compares at the same element count)."""
     sphere = os.path.join(repo, "samples", "sphere.json")
+    out = os.path.join(scratch, "calibrate.mesh")
     sizes = [0.05, 0.025] + ([0.0125] if args.large else [])
     for h in sizes:
         geo = os.path.join(scratch, "sphere_%g.geo" % h)
@@ -146,15 +198,21 @@ def cases(args, repo, scratch):
 
         def gmsh_sphere(size, out):
             write_geo(size)
-            return subprocess.run([args.gmsh, geo, "-3", "-algo", "hxt", "-nt", "2", "-o", out],
-                                  capture_output=True, text=True).returncode
+            return exit_status([args.gmsh, geo, "-3", "-algo", "hxt", "-nt", "2", "-o", out])
 
         rd_args = [sphere, "--size", str(h)]
-        gh = calibrated_h(args, rd_args, gmsh_sphere, h, scratch)
-        if gh is None:
+        if not rdmesh_reference(args, rd_args, out):
             continue
+        target = len(read_medit_tets(out)[1])
+        gh = calibrated_h(gmsh_sphere, h, target, out)
         write_geo(gh)
-        yield "sphere h=%g (gmsh %.4g)" % (h, gh), rd_args, [geo]
+        name = "sphere h=%g (gmsh %.4g)" % (h, gh)
+        cgal = None
+        if args.cgal:
+            # shapes.h's sphere: sphere.json's function in sphere.json's box.
+            cgal = cgal_args(args, "sphere", h, target, out)
+            name = name[:-1] + ", cgal %.4g)" % float(cgal[-1])
+        yield Case(name, rd_args, [geo], cgal, "")
     for name in ("gmsh_Zylkopf.stp", "occtsample_ANC101.step"):
         path = os.path.join(args.data_dir, "step", name)
         if not os.path.exists(path):
@@ -162,20 +220,60 @@ def cases(args, repo, scratch):
             continue
         # From diagonal / 20 (rdmesh's CAD sizes also follow curvature and thin
         # parts, Gmsh's -clmax alone does not).
-        out = os.path.join(scratch, "diagonal.mesh")
-        p = subprocess.run([args.rdmesh, path, "-q", "--threads", "2", "-o", out],
-                           capture_output=True, text=True)
-        if p.returncode != 0:
-            print("%s: rdmesh failed (%s): skipped" % (name, p.stderr.strip()), file=sys.stderr)
+        if not rdmesh_reference(args, [path], out):
             continue
-        vertices = read_medit_tets(out)[0]
+        vertices, tets = read_medit_tets(out)
+        target = len(tets)
         h = float(numpy.linalg.norm(vertices.max(axis=0) - vertices.min(axis=0))) / 20
-        gh = calibrated_h(args, [path], lambda size, out: subprocess.run(
-            [args.gmsh, path, "-3", "-algo", "hxt", "-nt", "2", "-clmax", repr(size), "-o", out],
-            capture_output=True, text=True).returncode, h, scratch)
-        if gh is None:
-            continue
-        yield name, [path], [path, "-clmax", repr(gh)]
+        gh = calibrated_h(lambda size, out: exit_status(
+            [args.gmsh, path, "-3", "-algo", "hxt", "-nt", "2", "-clmax", repr(size), "-o", out]),
+            h, target, out)
+        cgal, cgal_error = None, ""
+        if args.cgal:
+            surface = os.path.join(scratch, os.path.splitext(name)[0] + ".stl")
+            cgal_error = cgal_surface(args, path, h, surface)
+            if not cgal_error:
+                cgal = cgal_args(args, surface, h, target, out)
+        yield Case(name, [path], [path, "-clmax", repr(gh)], cgal, cgal_error)
+
+
+def find_cgal(args):
+    """args.cgal: the rdmesh_cgal_pipeline binary (absolute: the tools run in the
+    scratch folder), None when absent; args.cgal_parallel: built with TBB."""
+    args.cgal = os.path.abspath(args.cgal or os.path.join(args.build_dir, "bench",
+                                                          "rdmesh_cgal_pipeline"))
+    args.cgal_parallel = False
+    if not os.path.exists(args.cgal):
+        print("warning: no %s (bench/README.md says how to build it): no CGAL rows" % args.cgal,
+              file=sys.stderr)
+        args.cgal = None
+        return
+    version = subprocess.run([args.cgal, "--version"], capture_output=True, text=True)
+    print("rdmesh_cgal_pipeline: %s" % version.stdout.strip(), file=sys.stderr)
+    args.cgal_parallel = "Parallel_tag" in version.stdout
+    if not args.cgal_parallel:
+        print("CGAL parallel (Parallel_tag on TBB) is unavailable in this build: no "
+              "'cgal mesh_3 par' rows", file=sys.stderr)
+
+
+def tools_of(args, case):
+    """(label, threads, command of the output file or None: cannot run) per row."""
+    tools = []
+    for n in (1, 2):
+        tools.append(("rdmesh -t%d" % n, n, lambda out, n=n: [args.rdmesh] + case.rdmesh +
+                      ["-q", "--threads", str(n), "-o", out]))
+    for n in (1, 2):
+        tools.append(("gmsh hxt -nt%d" % n, n, lambda out, n=n: [args.gmsh] + case.gmsh +
+                      ["-3", "-algo", "hxt", "-nt", str(n), "-o", out]))
+    if args.cgal:
+        variants = [("cgal mesh_3 seq", 1, [])]
+        if args.cgal_parallel:
+            variants.append(("cgal mesh_3 par -t2", 2, ["--parallel", "--threads", "2"]))
+        for label, n, extra in variants:
+            cmd = None if case.cgal is None else (
+                lambda out, extra=extra: [args.cgal] + case.cgal + extra + ["-o", out])
+            tools.append((label, n, cmd))
+    return tools
 
 
 def main():
@@ -187,28 +285,30 @@ def main():
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--large", action="store_true", help="also the sphere at ~9.5 M tets")
     ap.add_argument("--gmsh", default="gmsh")
+    ap.add_argument("--cgal", help="rdmesh_cgal_pipeline (default: "
+                    "BUILD_DIR/bench/rdmesh_cgal_pipeline; absent: no CGAL rows)")
     ap.add_argument("--out", help="also write the table to this Markdown file")
     args = ap.parse_args()
     args.rdmesh = os.path.abspath(os.path.join(args.build_dir, "cli", "rdmesh"))
+    find_cgal(args)
     repo = os.path.normpath(os.path.join(here, ".."))
     rows = []
     with tempfile.TemporaryDirectory() as scratch:
-        for name, rd_args, gm_args in list(cases(args, repo, scratch)):
-            tools = []
-            for n in (1, 2):
-                tools.append(("rdmesh -t%d" % n, n, lambda out, n=n: [args.rdmesh] + rd_args +
-                              ["-q", "--threads", str(n), "-o", out]))
-            for n in (1, 2):
-                tools.append(("gmsh hxt -nt%d" % n, n, lambda out, n=n: [args.gmsh] + gm_args +
-                              ["-3", "-algo", "hxt", "-nt", str(n), "-o", out]))
+        for case in list(cases(args, repo, scratch)):
+            name = case.name
+            tools = tools_of(args, case)
             best = {}
             digests = {}
+            failures = {label: case.cgal_error for label, _, cmd in tools if cmd is None}
             for r in range(args.repeat):
                 for label, n, cmd in tools:
+                    if cmd is None:
+                        continue
                     out = os.path.join(scratch, "%s_%d.mesh" % (label.replace(" ", "_"), r))
                     wall, rss, code, err = run(cmd(out), scratch)
                     if code != 0:
                         print("%s %s: exit %d %s" % (name, label, code, err), file=sys.stderr)
+                        failures[label] = "exit %d %s" % (code, err)
                         continue
                     if label.startswith("rdmesh"):
                         digests.setdefault(label, set()).add(md5(out))
@@ -222,25 +322,26 @@ def main():
                           file=sys.stderr)
             for label, n, _ in tools:
                 if label not in best:
-                    rows.append((name, label, None, None, None, None, None, ""))
+                    rows.append(Row(name, label, failed=failures.get(label, "")))
                     continue
                 wall, rss, out = best[label]
                 vertices, tets = read_medit_tets(out)
                 anchor = best.get("gmsh hxt -nt%d" % n)
                 ratio = wall / anchor[0] if anchor and label.startswith("rdmesh") else None
                 digest = ",".join(sorted(d[:8] for d in digests.get(label, ())))
-                rows.append((name, label, wall, len(tets), min_dihedral_deg(vertices, tets), rss,
-                             ratio, digest))
+                rows.append(Row(name, label, wall, len(tets), min_dihedral_deg(vertices, tets), rss,
+                                ratio, digest))
     lines = ["| case | tool | wall s | tets | us/tet | min dihedral deg | peak MB "
              "| / HXT same threads | md5 |",
              "|---|---|---:|---:|---:|---:|---:|---:|---|"]
-    for name, label, wall, tets, angle, rss, ratio, digest in rows:
-        if wall is None:
-            lines.append("| %s | %s | failed | | | | | | |" % (name, label))
+    for row in rows:
+        if row.failed is not None:
+            lines.append("| %s | %s | failed: %s | | | | | | |"
+                         % (row.case, row.tool, row.failed.replace("|", "/")[:120]))
             continue
         lines.append("| %s | %s | %.2f | %d | %.2f | %.2f | %.0f | %s | %s |" % (
-            name, label, wall, tets, 1e6 * wall / max(tets, 1), angle, rss,
-            "%.2f" % ratio if ratio else "", digest))
+            row.case, row.tool, row.wall, row.tets, 1e6 * row.wall / max(row.tets, 1), row.angle,
+            row.rss, "%.2f" % row.ratio if row.ratio else "", row.digest))
     table = "\n".join(lines)
     print(table)
     if args.out:
