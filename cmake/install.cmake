@@ -1,4 +1,5 @@
-# cmake --install: the libraries, their public headers, the rdmesh command and
+# cmake --install: the libraries, their public headers, the rdmesh command (with
+# its CAD module) and
 # the CMake package (rdmeshConfig.cmake) that exports rdmesh::rdmesh and rdmesh::cad.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
@@ -17,6 +18,8 @@ install(TARGETS rdmesh_library rdmesh_io rdmesh_view rdmesh_core rdmesh_oracles 
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(TARGETS rdmesh RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# The command's CAD support, loaded from there (cli/CMakeLists.txt: RDMESH_CAD_MODULE_DIR).
+install(TARGETS rdmesh_cad_module LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/rdmesh)
 foreach(layer base oracles core view io cad)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${layer}/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 endforeach()

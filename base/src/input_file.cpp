@@ -2,6 +2,8 @@
 
 #include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 
 #include "rdmesh/errors.h"
@@ -20,6 +22,18 @@ void check_input_file(const std::string& path) {
   if (::access(path.c_str(), R_OK) != 0) {
     throw InputError(path, "cannot read the file (permission denied)");
   }
+}
+
+std::string lower_extension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+bool is_cad_file(const std::string& path) {
+  const std::string ext = lower_extension(path);
+  return ext == ".step" || ext == ".stp" || ext == ".brep" || ext == ".iges" || ext == ".igs";
 }
 
 }  // namespace rdmesh

@@ -28,13 +28,6 @@
 namespace rdmesh::cad {
 namespace {
 
-std::string lower_extension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return std::tolower(c); });
-  return ext;
-}
-
 int count(const TopoDS_Shape& s, TopAbs_ShapeEnum type) {
   int n = 0;
   for (TopExp_Explorer ex(s, type); ex.More(); ex.Next()) ++n;
@@ -166,10 +159,3 @@ std::string describe(const Standard_Failure& e) {
 }
 
 }  // namespace rdmesh::cad
-
-namespace rdmesh {
-bool is_cad_file(const std::string& path) {
-  const std::string ext = cad::lower_extension(path);
-  return ext == ".step" || ext == ".stp" || ext == ".brep" || ext == ".iges" || ext == ".igs";
-}
-}  // namespace rdmesh

@@ -4,7 +4,6 @@
 #include <cctype>
 #include <cstdint>
 #include <cstring>
-#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <unordered_map>
@@ -103,13 +102,6 @@ TriangleSoup parse_ascii_stl(const std::string& data, const std::string& file) {
   if (!solid) throw InputError(file, "not an STL file (no 'solid')");
   if (in_loop >= 0) throw InputError(file, "file ends inside a loop");
   return soup;
-}
-
-std::string lower_extension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
 }
 
 }  // namespace

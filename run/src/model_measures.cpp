@@ -1,22 +1,10 @@
 #include "model_measures.h"
 
-#include "rdmesh/cad_oracle.h"
+#include "rdmesh/cad_layer.h"
 #include "rdmesh/triangle_mesh_oracle.h"
 
 namespace rdmesh::run {
 namespace {
-
-/// The volumes only: BRepGProp's face areas cost as much as the rest of the
-/// check on B-spline faces, and the mesh's own areas serve the tolerance.
-ModelMeasures cad_measures(const CadOracle& cad, bool surface_only) {
-  ModelMeasures m;
-  if (surface_only) return m;
-  for (const SubdomainInfo& s : cad.subdomains()) {
-    m.subdomain_volume.resize(static_cast<std::size_t>(s.id.value), 0.0);
-    m.subdomain_volume[static_cast<std::size_t>(s.id.value) - 1] = cad.exact_volume(s.id);
-  }
-  return m;
-}
 
 ModelMeasures triangle_mesh_measures(const TriangleMeshOracle& tm, bool surface_only) {
   ModelMeasures m;
@@ -36,9 +24,7 @@ ModelMeasures triangle_mesh_measures(const TriangleMeshOracle& tm, bool surface_
 }  // namespace
 
 std::optional<ModelMeasures> model_measures(const DomainOracle& oracle, bool surface_only) {
-  if (const auto* cad = dynamic_cast<const CadOracle*>(&oracle)) {
-    return cad_measures(*cad, surface_only);
-  }
+  if (const CadLayer* cad = cad_layer_of(oracle)) return cad->measures(oracle, surface_only);
   if (const auto* tm = dynamic_cast<const TriangleMeshOracle*>(&oracle)) {
     return triangle_mesh_measures(*tm, surface_only);
   }

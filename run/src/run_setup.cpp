@@ -13,10 +13,9 @@
 #include <sstream>
 #include <string>
 
-#include "cad_sizes.h"
 #include "rdmesh/arguments.h"
 #include "rdmesh/atomic_file.h"
-#include "rdmesh/cad_oracle.h"
+#include "rdmesh/cad_layer.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/feature_name.h"
 #include "rdmesh/input_file.h"
@@ -157,20 +156,16 @@ void add_options(CLI::App& app, Options& opt) {
 LoadedInput load_input(const Options& opt) {
   const std::string& path = opt.input;
   if (is_cad_file(path)) {
-    CadOptions options;
-    options.heal = opt.heal;
-    std::unique_ptr<CadOracle> cad = load_cad_file(path, options);
+    CadLayer::Loaded cad = cad_layer().load(path, opt.heal);
     if (opt.heal) {
-      for (const std::string& line : cad->log()) std::cerr << path << ": " << line << "\n";
+      for (const std::string& line : cad.log) std::cerr << path << ": " << line << "\n";
     }
-    for (const std::string& w : cad->warnings()) {
+    for (const std::string& w : cad.warnings) {
       std::cerr << "rdmesh: warning: " << path << ": " << w << "\n";
     }
-    return {std::move(cad), {}};
+    return {std::move(cad.oracle), {}};
   }
-  std::string ext = fs::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return std::tolower(c); });
+  const std::string ext = lower_extension(path);
   if (ext == ".json") {
     LoadedDomain d = load_domain_file(path);
     return {std::move(d.oracle), std::move(d.hints)};
@@ -294,9 +289,10 @@ Criteria resolve_criteria(const Options& opt, const LoadedInput& input) {
   if (opt.radius_edge) c.cell_radius_edge = *opt.radius_edge;
   if (opt.min_size) c.min_size = *opt.min_size;
   // CAD models without sizes asked: follow the thickness of slender parts.
-  const auto* cad = dynamic_cast<const CadOracle*>(input.oracle.get());
+  const CadLayer* cad = cad_layer_of(*input.oracle);
   if (cad && !opt.size && !opt.facet_size && !opt.cell_size && !opt.edge_size) {
-    follow_thickness(*cad, c, {!h.facet_distance && !opt.facet_distance, !opt.min_size});
+    cad->follow_thickness(*input.oracle, c,
+                          {!h.facet_distance && !opt.facet_distance, !opt.min_size});
   }
   try {
     c.validate();
@@ -349,9 +345,7 @@ nlohmann::json field_json(const ScalarField& f, const Box3& box) {
 }
 
 bool is_triangle_mesh(const std::string& path) {
-  std::string ext = fs::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return std::tolower(c); });
+  const std::string ext = lower_extension(path);
   return ext == ".off" || ext == ".stl" || ext == ".obj" || ext == ".ply";
 }
 
@@ -397,9 +391,9 @@ nlohmann::json report_json(const Options& opt, const Criteria& criteria, const D
                                                      : nlohmann::json(nullptr);
   j["output"] = opt.output;
   j["criteria"] = criteria_json(opt, criteria, oracle.bounding_box());
-  if (const auto* cad = dynamic_cast<const CadOracle*>(&oracle)) {
+  if (const CadLayer* cad = cad_layer_of(oracle)) {
     for (auto& patch : j["patches"]) {
-      const std::string color = cad->patch_color(PatchId(patch.at("id").get<int>()));
+      const std::string color = cad->patch_color(oracle, PatchId(patch.at("id").get<int>()));
       if (!color.empty()) patch["color"] = color;
     }
   }

@@ -35,8 +35,12 @@ std::size_t ScratchDir::entries() const {
 }
 
 CliRun run_cli(const std::string& args, const std::filesystem::path& dir) {
-  const std::string command =
-      "cd '" + dir.string() + "' && '" + std::string(RDMESH_CLI_PATH) + "' " + args + " 2>&1";
+  return run_command(std::string(RDMESH_CLI_PATH), args, dir);
+}
+
+CliRun run_command(const std::string& program, const std::string& args,
+                   const std::filesystem::path& dir) {
+  const std::string command = "cd '" + dir.string() + "' && '" + program + "' " + args + " 2>&1";
   FILE* pipe = ::popen(command.c_str(), "r");
   if (!pipe) throw std::runtime_error("popen failed: " + command);
   CliRun run;

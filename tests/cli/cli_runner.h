@@ -29,6 +29,9 @@ class ScratchDir {
 
 /// Runs `rdmesh ARGS` (ARGS already shell-quoted) with `dir` as working directory.
 CliRun run_cli(const std::string& args, const std::filesystem::path& dir);
+/// The same with another executable (`program`, a path).
+CliRun run_command(const std::string& program, const std::string& args,
+                   const std::filesystem::path& dir);
 
 /// CPU seconds (user + system) used so far by this process (RUSAGE_SELF), or
 /// by its children that ended and were waited for, their own children

@@ -57,6 +57,7 @@
 #include <string>
 #include <vector>
 
+#include "rdmesh/input_file.h"  // is_cad_file: the extensions load_cad_file reads
 #include "rdmesh/oracle.h"
 
 namespace rdmesh {
@@ -181,9 +182,6 @@ class CadOracle final : public DomainOracle {
   std::unique_ptr<Model> model_;
   std::uint64_t serial_;  // identifies this oracle in the per-thread caches
 };
-
-/// True for the extensions load_cad_file reads (.step .stp .brep .iges .igs, any case).
-bool is_cad_file(const std::string& path);
 
 /// Reads a CAD file and builds its oracle. Throws InputError naming the file for
 /// a missing, unreadable, corrupt or truncated file, a file without solids or

@@ -1,6 +1,7 @@
 // Default sizes for CAD models that follow the thickness of slender parts.
 #pragma once
 
+#include "rdmesh/cad_layer.h"  // FollowedDefaults
 #include "rdmesh/cad_oracle.h"
 #include "rdmesh/criteria.h"
 
@@ -12,7 +13,7 @@ namespace rdmesh::run {
 /// unit of distance from the face's box, so that the mesh has cells inside the
 /// part (cad_sizes.cpp). Returns the number of faces that lowered the sizes.
 ///
-/// What the user did not set follows the thickness too (`Defaults`): the facet
+/// What the user did not set follows the thickness too (`defaults`): the facet
 /// distance near those faces becomes a tenth of that local size (the default
 /// ratio), and in each solid at most a tenth of half its mean thickness 2V/A,
 /// so that the boundary follows a rod's section (a hexagon at half the rod's
@@ -21,10 +22,6 @@ namespace rdmesh::run {
 /// minimum size (1e-4 of the box's diagonal by default) goes down to 1/50 of
 /// the thinnest solid's mean thickness (among solids of at least 1e-6 of the
 /// model's volume), so that this facet distance can be met.
-struct FollowedDefaults {
-  bool facet_distance = true;
-  bool min_size = true;
-};
 int follow_thickness(const CadOracle& cad, Criteria& criteria, FollowedDefaults defaults);
 
 }  // namespace rdmesh::run
