@@ -29,10 +29,12 @@ Each command is the whole run as a user starts it (read, mesh, write a Medit
 N`, `gmsh IN -3 -algo hxt -nt N -o OUT.mesh` and `rdmesh_cgal_pipeline IN --size
 H [--parallel --threads 2] -o OUT.mesh`. The commands of a case run one after
 the other, R times (default 3), alternating, and the fastest wall time of each
-counts; the CGAL rows run in the first C of those rounds only (--cgal-repeat,
-default R: CGAL's sequential run of the 9.5 M sphere alone takes about 8 minutes). Peak memory is the child's maximum resident set
-(/usr/bin/time -f %M). Tets and the minimum dihedral angle are read back from each .mesh
-file here, the same way for every tool (numpy; not timed). A tool that fails
+counts; the CGAL rows run in the first C of those rounds only (--cgal-repeat C,
+1 <= C, default R: CGAL's sequential run of the 9.5 M sphere alone takes 8-9
+minutes; its calibration run, before the rounds, is not skipped). Peak memory
+is the child's maximum resident set (/usr/bin/time -f %M). Tets and the minimum
+dihedral angle are read back from each .mesh file here, the same way for every
+tool (numpy; not timed). A tool that fails
 has a row "failed: " and its last line of stderr. The md5 column is the digest
 of rdmesh's output file of each thread count: equal digests across thread
 counts and repeats are the determinism claim. The ratio column is rdmesh's wall
@@ -292,8 +294,11 @@ def main():
                     "only (default: --repeat)")
     ap.add_argument("--out", help="also write the table to this Markdown file")
     args = ap.parse_args()
-    if args.cgal_repeat is None or args.cgal_repeat > args.repeat:
-        args.cgal_repeat = args.repeat
+    if args.repeat < 1:
+        ap.error("--repeat must be at least 1")
+    if args.cgal_repeat is not None and args.cgal_repeat < 1:
+        ap.error("--cgal-repeat must be at least 1")
+    args.cgal_repeat = min(args.cgal_repeat or args.repeat, args.repeat)
     args.rdmesh = os.path.abspath(os.path.join(args.build_dir, "cli", "rdmesh"))
     find_cgal(args)
     repo = os.path.normpath(os.path.join(here, ".."))
