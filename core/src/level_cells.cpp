@@ -1,6 +1,7 @@
 // The cell level: rule R5 on the cells of D|O (RR-7912 section 3).
 #include "level_cells.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "level_curves.h"
@@ -16,14 +17,24 @@ namespace {
 /// worst-first order more closely, wider ones keep more insertions next to
 /// the last (sphere, 1.1 M tets: 1 per doubling made 8% more tets, 8 per
 /// doubling lost half of the speed-up).
-constexpr double kBucketsPerDoubling = 4.0;
+constexpr std::size_t kBucketsPerDoubling = 4;
 constexpr std::size_t kLastBucket = 256;
 }  // namespace
 
 std::size_t CellLevel::bucket_of(double priority) {
   if (!(priority > 1.0)) return 0;
-  const double b = std::floor(std::log2(priority) * kBucketsPerDoubling);
-  return b >= static_cast<double>(kLastBucket) ? kLastBucket : static_cast<std::size_t>(b);
+  if (!std::isfinite(priority)) return kLastBucket;
+  // floor(4 log2(priority)), read exactly off the binary exponent and the
+  // mantissa against the doubles nearest 2^(1/4), 2^(1/2) and 2^(3/4): no
+  // libm call, whose last bit may differ from one CPU to another
+  // (rdmesh/portable_math.h), decides the order of refinement.
+  static constexpr double kQuarterPowers[3] = {1.1892071150027210667, 1.4142135623730950488,
+                                               1.6817928305074290861};
+  int exponent = 0;
+  const double mantissa = 2.0 * std::frexp(priority, &exponent);  // in [1, 2)
+  std::size_t b = static_cast<std::size_t>(exponent - 1) * kBucketsPerDoubling;
+  for (const double q : kQuarterPowers) b += mantissa >= q ? 1 : 0;
+  return std::min(b, kLastBucket);
 }
 
 CellLevel::CellLevel(const RestrictedComplex& complex, const Criteria& criteria)

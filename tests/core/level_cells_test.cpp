@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
+
 #include "tiny_complex.h"
 
 namespace rdmesh::detail {
@@ -78,6 +81,28 @@ TEST(CellLevel, TheQueueDropsDestroyedCellsAndCellsNoLongerBad) {
   std::size_t live = 0;
   while (!level.empty()) live += level.pop().has_value();
   EXPECT_EQ(live, 0u);
+}
+
+TEST(CellLevel, QueueBucketsAreFourPerDoublingReadExactly) {
+  // bucket_of(p) = floor(4 log2 p), from the exponent and the mantissa, no libm.
+  EXPECT_EQ(CellLevel::bucket_of(0.5), 0u);
+  EXPECT_EQ(CellLevel::bucket_of(1.0), 0u);
+  EXPECT_EQ(CellLevel::bucket_of(std::numeric_limits<double>::quiet_NaN()), 0u);
+  for (int k = 0; k < 64; ++k) {
+    const double p = std::ldexp(1.0, k);
+    if (k > 0) {
+      EXPECT_EQ(CellLevel::bucket_of(p), 4u * k) << "2^" << k;
+    }
+    EXPECT_EQ(CellLevel::bucket_of(std::nextafter(p * 2, 0.0)), 4u * k + 3) << "below 2^" << k + 1;
+  }
+  // Against floor(4 log2 p) away from the bucket edges, where both must agree.
+  for (double p = 1.001; p < 1e18; p *= 1.0137) {
+    const double exact = 4 * std::log2(p);
+    if (std::abs(exact - std::round(exact)) < 1e-9) continue;
+    EXPECT_EQ(CellLevel::bucket_of(p), static_cast<std::size_t>(std::floor(exact))) << p;
+  }
+  EXPECT_EQ(CellLevel::bucket_of(1e300), 256u);  // the last bucket holds the rest
+  EXPECT_EQ(CellLevel::bucket_of(std::numeric_limits<double>::infinity()), 256u);
 }
 
 }  // namespace

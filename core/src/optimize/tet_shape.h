@@ -9,6 +9,7 @@
 
 #include "rdmesh/geometry.h"
 #include "rdmesh/optimization.h"
+#include "rdmesh/portable_math.h"
 
 namespace rdmesh::detail {
 
@@ -44,9 +45,10 @@ inline double max_dihedral_cosine(const Point3& p0, const Point3& p1, const Poin
   return std::min(worst, 1.0);
 }
 
-/// The angle in degrees whose cosine is `c` (c from max_dihedral_cosine).
+/// The angle in degrees whose cosine is `c` (c from max_dihedral_cosine): the
+/// same bits on every machine, since the improvement ranks tetrahedra by it.
 inline double cosine_to_degrees(double c) {
-  return std::acos(std::clamp(c, -1.0, 1.0)) * (180.0 / M_PI);
+  return portable_acos(std::clamp(c, -1.0, 1.0)) * (180.0 / M_PI);
 }
 
 /// Adds one tetrahedron of smallest dihedral angle `deg` to `h`.
