@@ -38,7 +38,9 @@ Point3 VertexPerturber::angle_gradient(Cell_handle c, Vertex_handle v, double h)
   for (int k = 0; k < 4; ++k)
     if (c->vertex(k) != v) q[n++] = to_point3(c->vertex(k)->point());
   const Point3 p = to_point3(v->point());
-  auto angle = [&](const Point3& x) { return portable_acos(max_dihedral_cosine(x, q[0], q[1], q[2])); };
+  auto angle = [&](const Point3& x) {
+    return portable_acos(max_dihedral_cosine(x, q[0], q[1], q[2]));
+  };
   const Point3 axes[3] = {{h, 0, 0}, {0, h, 0}, {0, 0, h}};
   double g[3];
   for (int a = 0; a < 3; ++a) g[a] = (angle(p + axes[a]) - angle(p - axes[a])) / (2 * h);
