@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <numbers>
 
 namespace rdmesh {
 namespace {
@@ -36,19 +37,16 @@ double asin_small(double s) {
   return s + s * z * p;
 }
 
-constexpr double kPi = 3.141592653589793116;  // the double nearest pi
-constexpr double kHalfPi = 1.570796326794896558;
-
 }  // namespace
 
 double portable_acos(double x) {
   if (std::isnan(x)) return x;
   if (x >= 1.0) return 0.0;
-  if (x <= -1.0) return kPi;
+  if (x <= -1.0) return std::numbers::pi;
   // acos x = 2 asin sqrt((1 - x) / 2), where 1 - x (x in (1/2, 1)) and the halving are exact.
   if (x > 0.5) return 2.0 * asin_small(std::sqrt(0.5 * (1.0 - x)));
-  if (x < -0.5) return kPi - 2.0 * asin_small(std::sqrt(0.5 * (1.0 + x)));
-  return kHalfPi - asin_small(x);
+  if (x < -0.5) return std::numbers::pi - 2.0 * asin_small(std::sqrt(0.5 * (1.0 + x)));
+  return std::numbers::pi / 2 - asin_small(x);
 }
 
 }  // namespace rdmesh

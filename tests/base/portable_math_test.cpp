@@ -1,5 +1,5 @@
-// portable_acos: close to the true arc cosine over the whole range, exact at
-// the ends, and the same bits as the formula it is made of (no libm inside).
+// portable_acos: within 2 ulps of glibc's acos over the whole range, exact at
+// the ends and at known angles, clamped outside [-1, 1], monotone at its seams.
 #include "rdmesh/portable_math.h"
 
 #include <gtest/gtest.h>
@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <numbers>
 
 namespace {
 
@@ -20,22 +21,19 @@ std::int64_t ulps(double a, double b) {
 }
 
 TEST(PortableAcos, WithinTwoUlpsOfLibmOverTheRange) {
-  // 2 million arguments spread over [-1, 1], denser near +-1 where acos is steep.
-  std::int64_t worst = 0;
+  // 4 million arguments: 2 million spread over [-1, 1], and as many within
+  // 2^-20 of +-1, where acos is steep.
   for (int i = 0; i <= 2000000; ++i) {
     const double t = -1.0 + 2.0 * i / 2000000.0;
     for (const double x : {t, std::copysign(1.0 - std::ldexp(1.0 - std::abs(t), -20), t)}) {
       const double ours = rdmesh::portable_acos(x), libm = std::acos(x);
-      const std::int64_t d = ulps(ours, libm);
-      if (d > worst) worst = d;
-      ASSERT_LE(d, 2) << "x = " << x << ": " << ours << " against " << libm;
+      ASSERT_LE(ulps(ours, libm), 2) << "x = " << x << ": " << ours << " against " << libm;
     }
   }
-  EXPECT_GE(worst, 0);
 }
 
 TEST(PortableAcos, KnownValuesAndEnds) {
-  const double pi = 3.141592653589793116;
+  constexpr double pi = std::numbers::pi;
   EXPECT_EQ(rdmesh::portable_acos(1.0), 0.0);
   EXPECT_EQ(rdmesh::portable_acos(-1.0), pi);
   EXPECT_EQ(rdmesh::portable_acos(1.5), 0.0);  // clamped
