@@ -1,5 +1,6 @@
 #include "rdmesh/mesh_run.h"
 
+#include <algorithm>
 #include <future>
 
 #include "model_measures.h"
@@ -57,7 +58,10 @@ MeshRun mesh_loaded(const Options& opt, const LoadedInput& input, const Criteria
                      ? "checking the mesh against the model, writing " + printable(opt.output)
                      : "checking the mesh against the model");
   const bool full = opt.full_check || !opt.report.empty();
-  run.quality = measure_quality(run.result.mesh, full ? input.oracle.get() : nullptr, opt.threads);
+  // The file being written takes one of the threads.
+  const int check_threads =
+      staging.valid() ? std::max(1, resolve_threads(opt.threads) - 1) : opt.threads;
+  run.quality = measure_quality(run.result.mesh, full ? input.oracle.get() : nullptr, check_threads);
   if (const auto model = model_measures(*input.oracle, opt.surface_only)) {
     run.fidelity =
         check_fidelity(run.quality, *model, input.oracle->patches(), input.oracle->curves(),
