@@ -61,7 +61,8 @@ MeshRun mesh_loaded(const Options& opt, const LoadedInput& input, const Criteria
   // The file being written takes one of the threads.
   const int check_threads =
       staging.valid() ? std::max(1, resolve_threads(opt.threads) - 1) : opt.threads;
-  run.quality = measure_quality(run.result.mesh, full ? input.oracle.get() : nullptr, check_threads);
+  run.quality =
+      measure_quality(run.result.mesh, full ? input.oracle.get() : nullptr, check_threads);
   if (const auto model = model_measures(*input.oracle, opt.surface_only)) {
     run.fidelity =
         check_fidelity(run.quality, *model, input.oracle->patches(), input.oracle->curves(),
