@@ -67,14 +67,30 @@ inline void raise_to(double& slot, double value) {
   }
 }
 
+/// Lowers the nearest-neighbour distances (squared, by vertex index) of the
+/// four vertices of a finite cell at points p to its edges' lengths. Threads
+/// lower the same vertex's distance: the minimum does not depend on their order.
+inline void lower_nearest(Cell_handle c, const Point3 (&p)[4], std::vector<double>& nearest_sq) {
+  for (int a = 0; a < 3; ++a) {
+    for (int b = a + 1; b < 4; ++b) {
+      const double d2 = squared_norm(p[a] - p[b]);
+      lower_to(nearest_sq[static_cast<std::size_t>(c->vertex(a)->info().index)], d2);
+      lower_to(nearest_sq[static_cast<std::size_t>(c->vertex(b)->info().index)], d2);
+    }
+  }
+}
+
 /// The finite cells in iteration order and the cosine of each domain cell
 /// (-infinity for the others); returns the largest stamp of all cells.
 /// `store`: computed on `threads` threads and stored on every cell as its
 /// shape_cosine (the infinite cells' too), which the exuder's first call
 /// does; later calls read the stored shapes (whoever creates a cell stores its
-/// shape; self_check verifies them all at the end).
+/// shape; self_check verifies them all at the end). `nearest_sq` (with
+/// `store`): also lowered to the edges of every finite cell (lower_nearest),
+/// in the same pass over the cells' vertices, which lie all over memory.
 std::uint32_t domain_cosines(Triangulation& tr, int threads, bool store,
-                             std::vector<Cell_handle>& cells, std::vector<double>& cosines) {
+                             std::vector<Cell_handle>& cells, std::vector<double>& cosines,
+                             std::vector<double>* nearest_sq = nullptr) {
   cells.clear();
   cells.reserve(tr.number_of_finite_cells());
   std::uint32_t max_stamp = 0;
@@ -87,15 +103,25 @@ std::uint32_t domain_cosines(Triangulation& tr, int threads, bool store,
   }
   cosines.resize(cells.size());
   parallel_for(cells.size(), threads, [&](std::size_t i) {
+    const Cell_handle c = cells[i];
     if (!store) {
-      cosines[i] = cells[i]->info().shape_cosine;
+      cosines[i] = c->info().shape_cosine;
       return;
     }
     // The vertices lie all over memory: ask for those of a cell a few ahead.
     if (i + kVertexLookahead < cells.size())
       for (int k = 0; k < 4; ++k) __builtin_prefetch(&*cells[i + kVertexLookahead]->vertex(k));
-    cosines[i] = stored_shape(tr, cells[i]);
-    cells[i]->info().shape_cosine = cosines[i];
+    if (nearest_sq == nullptr) {
+      cosines[i] = stored_shape(tr, c);
+    } else {
+      // As stored_shape (c is finite), from the points read once.
+      Point3 p[4];
+      for (int k = 0; k < 4; ++k) p[k] = to_point3(c->vertex(k)->point());
+      lower_nearest(c, p, *nearest_sq);
+      cosines[i] = c->info().label != 0 ? max_dihedral_cosine(p[0], p[1], p[2], p[3])
+                                        : -std::numeric_limits<double>::infinity();
+    }
+    c->info().shape_cosine = cosines[i];
   });
   return max_stamp;
 }
@@ -180,10 +206,11 @@ class Exuder {
     clock_.restart();
     ExudationStats stats;
     stats.ran = true;
-    // One pass over the cells gives the figures before, the first queue, the stored shapes
-    // and the first free stamp.
-    std::uint32_t next_stamp = domain_cosines(tr_, threads_, /*store=*/true, cells_, cosines_) + 1;
-    prepare();
+    // One pass over the cells gives the figures before, the first queue, the stored shapes,
+    // the nearest neighbours and the first free stamp.
+    index_vertices();
+    std::uint32_t next_stamp =
+        domain_cosines(tr_, threads_, /*store=*/true, cells_, cosines_, &nearest_sq_) + 1;
     measure(cosines_, threads_, stats.min_dihedral_before_deg, stats.histogram_before);
     next_stamp = pump_passes(stats, next_stamp, /*cosines_fresh=*/true);
     if (options_.perturb && !stats.time_limit_reached) {
@@ -214,7 +241,8 @@ class Exuder {
       measure(cosines_, threads_, stats.min_dihedral_after_perturb_deg, histogram);
       stats.perturb_seconds = elapsed() - t;
       if (!stats.time_limit_reached) {
-        prepare();  // nearest neighbours moved (cells_ is fresh)
+        index_vertices();  // nearest neighbours moved (cells_ is fresh)
+        find_nearest();
         pump_passes(stats, perturber.next_stamp(), /*cosines_fresh=*/false);
       }
     }
@@ -393,28 +421,25 @@ class Exuder {
     return std::sqrt(d2);
   }
 
-  /// Vertex ids and nearest-neighbour distances (cells_ must hold the finite cells).
-  void prepare() {
+  /// Vertex ids, no moves yet, and nearest-neighbour distances to be lowered.
+  void index_vertices() {
     int n = 0;
     for (auto v = tr_.finite_vertices_begin(); v != tr_.finite_vertices_end(); ++v)
       v->info().index = n++;
     nearest_sq_.assign(static_cast<std::size_t>(n), std::numeric_limits<double>::infinity());
     moves_.assign(static_cast<std::size_t>(n), 0);
-    // Over the six edges of every finite cell: each edge is seen from each of
-    // its cells, which costs less than CGAL's edge iterator (it walks the
-    // cells around every edge to report it once). Threads lower the same
-    // vertex's distance: the minimum does not depend on their order.
+  }
+
+  /// Nearest-neighbour distances over the six edges of every finite cell
+  /// (cells_ must hold them; after index_vertices()): each edge is seen from
+  /// each of its cells, which costs less than CGAL's edge iterator (it walks
+  /// the cells around every edge to report it once).
+  void find_nearest() {
     parallel_for(cells_.size(), threads_, [&](std::size_t i) {
       const Cell_handle c = cells_[i];
       Point3 p[4];
       for (int k = 0; k < 4; ++k) p[k] = to_point3(c->vertex(k)->point());
-      for (int a = 0; a < 3; ++a) {
-        for (int b = a + 1; b < 4; ++b) {
-          const double d2 = squared_norm(p[a] - p[b]);
-          lower_to(nearest_sq_[c->vertex(a)->info().index], d2);
-          lower_to(nearest_sq_[c->vertex(b)->info().index], d2);
-        }
-      }
+      lower_nearest(c, p, nearest_sq_);
     });
   }
 
