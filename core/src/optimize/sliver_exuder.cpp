@@ -68,16 +68,22 @@ inline void raise_to(double& slot, double value) {
 }
 
 /// Lowers the nearest-neighbour distances (squared, by vertex index) of the
-/// four vertices of a finite cell at points p to its edges' lengths. Threads
-/// lower the same vertex's distance: the minimum does not depend on their order.
+/// four vertices of a finite cell at points p to its edges' lengths: each
+/// vertex once, to the shortest of its three edges (the array is read at
+/// random: one access per vertex, not two per edge). Threads lower the same
+/// vertex's distance: the minimum does not depend on their order.
 inline void lower_nearest(Cell_handle c, const Point3 (&p)[4], std::vector<double>& nearest_sq) {
+  constexpr double kNone = std::numeric_limits<double>::infinity();
+  double shortest[4] = {kNone, kNone, kNone, kNone};
   for (int a = 0; a < 3; ++a) {
     for (int b = a + 1; b < 4; ++b) {
       const double d2 = squared_norm(p[a] - p[b]);
-      lower_to(nearest_sq[static_cast<std::size_t>(c->vertex(a)->info().index)], d2);
-      lower_to(nearest_sq[static_cast<std::size_t>(c->vertex(b)->info().index)], d2);
+      shortest[a] = std::min(shortest[a], d2);
+      shortest[b] = std::min(shortest[b], d2);
     }
   }
+  for (int k = 0; k < 4; ++k)
+    lower_to(nearest_sq[static_cast<std::size_t>(c->vertex(k)->info().index)], shortest[k]);
 }
 
 /// The finite cells in iteration order and the cosine of each domain cell
