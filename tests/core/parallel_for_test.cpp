@@ -5,9 +5,17 @@
 #include "rdmesh/parallel_for.h"
 
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
+#include <chrono>
 #include <cmath>
+#include <condition_variable>
+#include <filesystem>
+#include <mutex>
+#include <set>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 namespace rdmesh {
@@ -56,6 +64,82 @@ TEST(ParallelFor, RethrowsTheExceptionOfTheLowestChunk) {
   } catch (const std::runtime_error& e) {
     EXPECT_STREQ(e.what(), "chunk 3");
   }
+}
+
+/// The kernel's ids of the threads other than the caller's that ran tasks of
+/// one loop of n tasks: every task waits, up to 10 s, until threads - 1 such
+/// threads have run one, so that every thread does.
+std::set<pid_t> helper_threads(std::size_t n, int threads) {
+  std::mutex m;
+  std::condition_variable helped;
+  std::set<pid_t> ids;
+  const pid_t caller = ::gettid();
+  const auto all = static_cast<std::size_t>(threads - 1);
+  parallel_tasks(n, threads, [&](std::size_t) {
+    std::unique_lock<std::mutex> lock(m);
+    if (::gettid() != caller && ids.insert(::gettid()).second) helped.notify_all();
+    helped.wait_for(lock, std::chrono::seconds(10), [&] { return ids.size() >= all; });
+  });
+  return ids;
+}
+
+/// Whether thread `tid` of this process is still running.
+bool thread_alive(pid_t tid) {
+  return std::filesystem::exists("/proc/self/task/" + std::to_string(tid));
+}
+
+TEST(ParallelFor, ItsHelperThreadsOutliveTheLoopsAndServeTheNextOnes) {
+  std::set<pid_t> seen;
+  for (int loop = 0; loop < 5; ++loop) {
+    const std::set<pid_t> helpers = helper_threads(16, 2);
+    ASSERT_EQ(helpers.size(), 1u) << "no second thread took a task";
+    seen.insert(helpers.begin(), helpers.end());
+  }
+  for (const pid_t tid : seen) EXPECT_TRUE(thread_alive(tid)) << "helper " << tid << " ended";
+  // Threads started for each loop would all be new ones: the pool has at most
+  // as many as the most a loop of this process asked for (8, in this file).
+  EXPECT_LE(seen.size(), 7u);
+  const std::set<pid_t> three = helper_threads(24, 3);
+  EXPECT_EQ(three.size(), 2u);
+  for (const pid_t tid : three) EXPECT_TRUE(thread_alive(tid));
+}
+
+TEST(ParallelFor, ALoopInsideALoopAndLoopsFromTwoThreadsAllRunEveryTask) {
+  // The inner loops find the pool taken and start threads of their own.
+  const std::size_t outer = 6, inner = 3 * kParallelChunk + 5;
+  std::vector<std::vector<int>> seen(outer, std::vector<int>(inner, 0));
+  parallel_tasks(outer, 2, [&](std::size_t k) {
+    parallel_for(inner, 2, [&](std::size_t i) { ++seen[k][i]; });
+  });
+  for (std::size_t k = 0; k < outer; ++k)
+    for (std::size_t i = 0; i < inner; ++i) ASSERT_EQ(seen[k][i], 1) << k << " " << i;
+  // Two host threads looping at once: one has the pool, the other its own threads.
+  const std::size_t n = 20 * kParallelChunk;
+  double a = 0, b = 0;
+  std::thread other([&] {
+    for (int r = 0; r < 20; ++r) b = chunked_sum(n, 2);
+  });
+  for (int r = 0; r < 20; ++r) a = chunked_sum(n, 2);
+  other.join();
+  EXPECT_EQ(a, chunked_sum(n, 1));
+  EXPECT_EQ(b, a);
+}
+
+TEST(ParallelFor, RunsInAForkedChildOfAProcessWhosePoolHasThreads) {
+  ASSERT_EQ(helper_threads(16, 2).size(), 1u);  // the parent's pool has its thread
+  const std::size_t n = 8 * kParallelChunk + 1;
+  const double expected = chunked_sum(n, 1);
+  const pid_t pid = ::fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    // The child has no copy of the pool's thread: its loops must not wait for it.
+    const bool same = chunked_sum(n, 2) == expected && helper_threads(16, 2).size() == 1;
+    ::_exit(same ? 0 : 1);
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+  ASSERT_TRUE(WIFEXITED(status)) << "the child did not finish (status " << status << ")";
+  EXPECT_EQ(WEXITSTATUS(status), 0);
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <atomic>
 #include <cstddef>
 #include <exception>
+#include <functional>
 #include <thread>
 #include <vector>
 
@@ -38,10 +39,21 @@ constexpr std::size_t kParallelChunk = 4096;
 /// kParallelChunk)).
 inline std::size_t chunk_count(std::size_t n) { return (n + kParallelChunk - 1) / kParallelChunk; }
 
+namespace detail {
+/// Starts job() on `helpers` threads of the process's worker pool (kept between
+/// loops, core/src/worker_pool.cpp) and returns at once; false, with nothing
+/// started, when another loop has the pool or this process is a forked child.
+bool start_pooled(std::size_t helpers, const std::function<void()>& job);
+/// After a successful start_pooled and the caller's own job(): waits for the
+/// calls under way (those not begun are dropped: every task is taken).
+void finish_pooled();
+}  // namespace detail
+
 /// Calls body(task) once for every task in [0, n), on up to `threads` threads
 /// (the calling one among them; 0: all cores), each task whole on one thread.
-/// An exception thrown by a body is rethrown here after every thread stopped
-/// (the one of the lowest task when several threw).
+/// The others are the worker pool's, or threads of its own when another loop
+/// has the pool. An exception thrown by a body is rethrown here after every
+/// thread stopped (the one of the lowest task when several threw).
 template <class Body>
 void parallel_tasks(std::size_t n, int threads, Body body) {
   const auto workers = static_cast<std::size_t>(
@@ -52,7 +64,7 @@ void parallel_tasks(std::size_t n, int threads, Body body) {
   }
   std::atomic<std::size_t> next{0};
   std::vector<std::exception_ptr> errors(n);
-  auto work = [&] {
+  const std::function<void()> work = [&] {
     for (std::size_t k = next++; k < n; k = next++) {
       try {
         body(k);
@@ -65,11 +77,16 @@ void parallel_tasks(std::size_t n, int threads, Body body) {
     Running() { parallel_regions().fetch_add(1, std::memory_order_relaxed); }
     ~Running() { parallel_regions().fetch_sub(1, std::memory_order_relaxed); }
   } running;
-  std::vector<std::thread> pool;
-  pool.reserve(workers - 1);
-  for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(work);
-  work();
-  for (std::thread& t : pool) t.join();
+  if (detail::start_pooled(workers - 1, work)) {
+    work();
+    detail::finish_pooled();
+  } else {
+    std::vector<std::thread> pool;
+    pool.reserve(workers - 1);
+    for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(work);
+    work();
+    for (std::thread& t : pool) t.join();
+  }
   for (const std::exception_ptr& e : errors)
     if (e) std::rethrow_exception(e);
 }
