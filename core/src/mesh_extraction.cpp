@@ -11,7 +11,7 @@
 
 namespace rdmesh::detail {
 
-TetMesh Refiner::extract_mesh() {
+TetMesh Refiner::extract_mesh(std::vector<double>* cosines) {
   TetMesh mesh;
   mesh.subdomains = oracle_.subdomains();
   mesh.patches = oracle_.patches();
@@ -85,6 +85,7 @@ TetMesh Refiner::extract_mesh() {
   }
   mesh.tets.resize(tets);
   mesh.tet_subdomain.resize(tets);
+  if (cosines != nullptr) cosines->resize(tets);
   mesh.triangles.resize(triangle_start.back());
   mesh.triangle_patch.resize(triangle_start.back());
   parallel_tasks(starts.size(), threads, [&](std::size_t k) {
@@ -95,6 +96,7 @@ TetMesh Refiner::extract_mesh() {
       mesh.tets[t] = {c->vertex(0)->info().index, c->vertex(1)->info().index,
                       c->vertex(2)->info().index, c->vertex(3)->info().index};
       mesh.tet_subdomain[t] = SubdomainId{label};
+      if (cosines != nullptr) (*cosines)[t] = c->info().shape_cosine;
       for (int i = 0; i < 4; ++i) {
         if (!emits_triangle(c, i, label)) continue;
         Vertex_handle a = c->vertex((i + 1) & 3), b = c->vertex((i + 2) & 3),

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "optimize/sliver_exuder.h"
+#include "optimize/tet_improvement_entry.h"
 #include "rdmesh/errors.h"
 #include "rdmesh/number_text.h"
 #include "rdmesh/stopwatch.h"
@@ -199,7 +200,12 @@ MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& given,
 
   phase.restart();
   announce(options, "extracting the mesh");
-  result.mesh = refiner->extract_mesh();
+  // After exudation every cell holds its shape: the improvement reads it
+  // from the extraction rather than computing it again.
+  std::vector<double> cosines;
+  const bool known_shape =
+      result.exudation.ran && options.improvement.enabled && !options.surface_only;
+  result.mesh = refiner->extract_mesh(known_shape ? &cosines : nullptr);
   result.stats = refiner->stats();
   if (protect) {
     record_protection(*planner, plan, refiner->conflicts(), result.stats);
@@ -227,9 +233,10 @@ MeshResult generate_mesh(const DomainOracle& oracle, const Criteria& given,
   }
   if (improvement.enabled && !options.surface_only) {
     announce(options, "improving the tetrahedra");
-    result.improvement =
-        improve_tets(result.mesh, improvement,
-                     {&oracle, criteria.facet_distance, criteria.edge_size, criteria.facet_size});
+    result.improvement = detail::improve_tets_of_known_shape(
+        result.mesh, improvement,
+        {&oracle, criteria.facet_distance, criteria.edge_size, criteria.facet_size},
+        std::move(cosines));
   }
   return result;
 }

@@ -61,7 +61,11 @@ class Refiner final : private InsertionObserver {
   /// not be met there): shrinking them and refining again removes the conflict.
   const std::vector<BallRef>& conflicts() const { return curve_level_->conflicts(); }
   /// The tetrahedra of D|O, the triangles of D|S and the edges of D|L, labelled.
-  TetMesh extract_mesh();
+  /// `cosines` (only after exudation, which leaves every cell its shape):
+  /// also each tetrahedron's max_dihedral_cosine (optimize/tet_shape.h), in
+  /// the mesh's order: the cell's shape_cosine, the same bits (the same points
+  /// in the same order).
+  TetMesh extract_mesh(std::vector<double>* cosines = nullptr);
 
   const RefinementStats& stats() const { return stats_; }
   /// The edges of D|L: consecutive samples of every curve.

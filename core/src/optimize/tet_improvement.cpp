@@ -21,6 +21,7 @@
 #include "rdmesh/errors.h"
 #include "rdmesh/stopwatch.h"
 #include "tet_flips.h"
+#include "tet_improvement_entry.h"
 #include "tet_insertion.h"
 #include "tet_shape.h"
 #include "tet_smoothing.h"
@@ -69,6 +70,13 @@ bool best_flip(const TetTopology& topo, int t, LocalChange& best) {
 
 TetImprovementStats improve_tets(TetMesh& mesh, const TetImprovementOptions& options,
                                  const BoundarySurface& surface) {
+  return detail::improve_tets_of_known_shape(mesh, options, surface, {});
+}
+
+TetImprovementStats detail::improve_tets_of_known_shape(TetMesh& mesh,
+                                                        const TetImprovementOptions& options,
+                                                        const BoundarySurface& surface,
+                                                        std::vector<double> cosines) {
   if (!mesh.tet_mid_nodes.empty() || !mesh.tet_partition.empty()) {
     throw InputError("tetrahedra are improved before second-order nodes and partitions are made");
   }
@@ -86,7 +94,7 @@ TetImprovementStats improve_tets(TetMesh& mesh, const TetImprovementOptions& opt
   const auto elapsed = [&] { return clock.seconds(); };
   TetImprovementStats stats;
   stats.ran = true;
-  TetTopology topo(mesh, options.threads);
+  TetTopology topo(mesh, options.threads, std::move(cosines));
   std::optional<detail::PatchSurface> patches;
   std::vector<double> curve_parameters;  // of the vertices inside chains, found once
   if (surface.oracle && options.boundary_moves) {

@@ -3,8 +3,10 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <algorithm>
+#include <string>
 #include <utility>
 
+#include "rdmesh/errors.h"
 #include "rdmesh/parallel_for.h"
 #include "tet_shape.h"
 
@@ -46,9 +48,16 @@ TetTopology::Key TetTopology::face_key(int a, int b, int c) {
   return k;
 }
 
-TetTopology::TetTopology(const TetMesh& mesh, int threads)
-    : points_(mesh.vertices), incident_(mesh.vertices.size()), fixed_(mesh.vertices.size(), 0) {
+TetTopology::TetTopology(const TetMesh& mesh, int threads, std::vector<double> cosines)
+    : points_(mesh.vertices),
+      quality_(std::move(cosines)),
+      incident_(mesh.vertices.size()),
+      fixed_(mesh.vertices.size(), 0) {
   const std::size_t n = mesh.tets.size();
+  const bool given = !quality_.empty();  // the cosines
+  if (given && quality_.size() != n)
+    throw InternalError("tet topology: " + std::to_string(quality_.size()) + " cosines for " +
+                        std::to_string(n) + " tetrahedra");
   tets_.reserve(n + n / 8);
   labels_.reserve(n + n / 8);
   quality_.reserve(n + n / 8);
@@ -56,14 +65,19 @@ TetTopology::TetTopology(const TetMesh& mesh, int threads)
   tets_.assign(mesh.tets.begin(), mesh.tets.end());
   for (const SubdomainId& s : mesh.tet_subdomain) labels_.push_back(s.value);
   alive_.assign(n, 1);
-  // The qualities, each a pure function of its tet, on `threads` threads.
-  quality_.resize(n);
-  // The points lie all over memory: ask for those of a tet a few ahead.
-  parallel_for(n, threads, [&](std::size_t t) {
-    if (t + kPointLookahead < n)
-      for (const int v : tets_[t + kPointLookahead]) __builtin_prefetch(&points_[v]);
-    quality_[t] = tet_quality(tets_[t]);
-  });
+  if (given) {
+    // tet_quality is cosine_to_degrees of the cosine.
+    parallel_for(n, threads, [&](std::size_t t) { quality_[t] = cosine_to_degrees(quality_[t]); });
+  } else {
+    // The qualities, each a pure function of its tet, on `threads` threads.
+    quality_.resize(n);
+    // The points lie all over memory: ask for those of a tet a few ahead.
+    parallel_for(n, threads, [&](std::size_t t) {
+      if (t + kPointLookahead < n)
+        for (const int v : tets_[t + kPointLookahead]) __builtin_prefetch(&points_[v]);
+      quality_[t] = tet_quality(tets_[t]);
+    });
+  }
   // Each vertex's list sized once (a few spare places for the flips to come):
   // growing millions of small lists by doubling costs more than the sweeps.
   // The tetrahedra in a few ranges, each counted and then written by one thread

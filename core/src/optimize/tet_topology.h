@@ -30,8 +30,11 @@ class TetTopology {
  public:
   /// Copies the tetrahedra of `mesh`; its triangles, feature edges and corners are the constraints.
   /// `threads`: for the qualities of the tetrahedra and the vertices' lists
-  /// (0: all cores); the topology is the same for any number.
-  explicit TetTopology(const TetMesh& mesh, int threads = 1);
+  /// (0: all cores); the topology is the same for any number. `cosines`:
+  /// when not empty, the max_dihedral_cosine of each of mesh.tets, known
+  /// beforehand (Refiner::extract_mesh): the qualities are their angles,
+  /// the same bits as tet_quality, in that vector's memory.
+  explicit TetTopology(const TetMesh& mesh, int threads = 1, std::vector<double> cosines = {});
 
   std::size_t size() const { return tets_.size(); }  ///< tetrahedra ever created
   bool alive(int t) const { return alive_[t]; }
