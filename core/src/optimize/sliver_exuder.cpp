@@ -20,6 +20,7 @@
 #include "rdmesh/number_text.h"
 #include "rdmesh/parallel_for.h"
 #include "rdmesh/stopwatch.h"
+#include "sliver_queue_order.h"
 #include "tet_shape.h"
 #include "vertex_perturber.h"
 #include "weight_pump.h"
@@ -156,9 +157,9 @@ void measure(const std::vector<double>& cosines, int threads, double& min_deg,
 }
 
 struct QueuedVertex {
-  double cosine;  ///< worst cosine of its domain cells when queued (larger = worse)
+  std::uint64_t key;  ///< SliverQueueOrder's key when queued (larger = first)
   Vertex_handle vertex;
-  bool operator<(const QueuedVertex& o) const { return cosine < o.cosine; }
+  bool operator<(const QueuedVertex& o) const { return key < o.key; }
 };
 
 /// Rounds of lanes in each pumping pass (the first cut across the longest
@@ -385,8 +386,9 @@ class Exuder {
         continue;
       }
       if (!(worst > bound_cosine_)) continue;
-      if (worst < top.cosine) {
-        lane.queue.push({worst, v});
+      const QueuedVertex now = entry(worst, v);
+      if (now.key < top.key) {
+        lane.queue.push(now);
         continue;
       }
       dirty_[id] = 0;  // tried on this star: wait until the star changes
@@ -411,7 +413,7 @@ class Exuder {
         if (!(cosine > bound_cosine_)) continue;
         for (int k = 0; k < 4; ++k) {
           dirty_[c->vertex(k)->info().index] = 1;
-          lane.queue.push({cosine, c->vertex(k)});
+          lane.queue.push(entry(cosine, c->vertex(k)));
         }
       }
     }
@@ -427,11 +429,21 @@ class Exuder {
     return std::sqrt(d2);
   }
 
-  /// Vertex ids, no moves yet, and nearest-neighbour distances to be lowered.
+  /// Queue entry of vertex v, whose worst domain cell has cosine `cosine`.
+  QueuedVertex entry(double cosine, Vertex_handle v) const {
+    return {order_.key(cosine, to_point3(v->point())), v};
+  }
+
+  /// Vertex ids, no moves yet, nearest-neighbour distances to be lowered and
+  /// the queue's order over the vertices' box.
   void index_vertices() {
     int n = 0;
-    for (auto v = tr_.finite_vertices_begin(); v != tr_.finite_vertices_end(); ++v)
+    Box3 box = Box3::empty();
+    for (auto v = tr_.finite_vertices_begin(); v != tr_.finite_vertices_end(); ++v) {
       v->info().index = n++;
+      box.grow(to_point3(v->point()));
+    }
+    if (n > 0) order_ = SliverQueueOrder(box.lo, box.hi, static_cast<std::size_t>(n));
     nearest_sq_.assign(static_cast<std::size_t>(n), std::numeric_limits<double>::infinity());
     moves_.assign(static_cast<std::size_t>(n), 0);
   }
@@ -465,7 +477,7 @@ class Exuder {
     std::vector<QueuedVertex> queued;
     for (auto v = tr_.finite_vertices_begin(); v != tr_.finite_vertices_end(); ++v) {
       const double w = worst[v->info().index];
-      if (w > bound_cosine_) queued.push_back({w, v});
+      if (w > bound_cosine_) queued.push_back(entry(w, v));
     }
     return queued;
   }
@@ -492,6 +504,7 @@ class Exuder {
   /// cosine as it was at change worst_version_ (pump passes).
   std::vector<std::uint32_t> star_version_, worst_version_;
   std::vector<double> worst_;
+  SliverQueueOrder order_{Point3{}, Point3{}, 0};
   std::vector<Cell_handle> cells_;  ///< finite cells, scratch of domain_cosines
   std::vector<double> cosines_;
   Stopwatch clock_;
