@@ -14,6 +14,7 @@
 #include "bucket_queue.h"
 #include "element_entry.h"
 #include "insertion.h"
+#include "lane_cell_queue.h"
 #include "lane_cut.h"
 #include "rdmesh/criteria.h"
 #include "restricted_complex.h"
@@ -51,8 +52,8 @@ class CellLevel {
     lane_max_squared_radius_ = max_squared_radius;
     cut_ = cut;
   }
-  BucketQueue<ElementEntry>& lane_queue(int lane) { return lanes_[lane]; }
-  const BucketQueue<ElementEntry>& lane_queue(int lane) const { return lanes_[lane]; }
+  LaneCellQueue& lane_queue(int lane) { return lanes_[lane]; }
+  const LaneCellQueue& lane_queue(int lane) const { return lanes_[lane]; }
   /// Queues an entry for the sequential steps (one a lane could not refine):
   /// pop() refines it, never hands it back to the lanes.
   void push(ElementEntry e) {
@@ -85,7 +86,7 @@ class CellLevel {
   /// Frees the queue's storage once it is empty (its peak size is no longer needed).
   void release_if_empty() {
     if (queue_.empty()) queue_.release();
-    for (BucketQueue<ElementEntry>& q : lanes_)
+    for (LaneCellQueue& q : lanes_)
       if (q.empty()) q.release();
   }
 
@@ -102,7 +103,7 @@ class CellLevel {
   double shape_bound_sq_;  ///< beta_3^2
   BucketQueue<ElementEntry> queue_;
   std::vector<ElementEntry> parked_;
-  BucketQueue<ElementEntry> lanes_[2];
+  LaneCellQueue lanes_[2];
   bool lanes_on_ = false;
   double lane_max_squared_radius_ = 0;
   const LaneCut* cut_ = nullptr;  ///< the lanes' current cut (RefinementLanes)

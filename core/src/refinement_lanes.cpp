@@ -49,6 +49,18 @@ ElementEntry plain(ElementEntry e) {
 }
 /// A conflict zone seldom reaches further from the centre than this many radii.
 constexpr double kBallReach = 3.0;
+/// Tetrahedra the criteria give over the box of a block of the lanes' cell
+/// queues (estimate_elements, which counts about twice a sphere's tets in its
+/// box), at least. A lane refines its blocks one after the other, in Morton
+/// order, so that its insertions read and write cells nearby in memory, until
+/// the mesh outgrows the cache, as they do in strict priority order. Unit
+/// sphere, one thread, 9.4 M tets: refinement 18.2-18.3 s with 512 blocks
+/// (35 k estimated tets each), 21.8 s with 64, 20.1 s with 4096, 22.6-24.0 s
+/// with one; 0.6% more tets with 512 blocks, 1.2% with 4096. At 1.2 M tets,
+/// 64 blocks: 0.6% more tets, 2.0 s against 2.2-2.4 s.
+constexpr double kEstimatedTetsPerBlock = 1 << 15;
+/// At most 4096 blocks (a queue each, kept in every lane).
+constexpr int kMaxBlockBits = 12;
 /// Cells with a radius above the domain's extent over this stay sequential:
 /// the coarse start of refinement, whose zones cross any cut.
 constexpr double kCoarse = 16.0;
@@ -100,6 +112,7 @@ RefinementLanes::RefinementLanes(RestrictedComplex& complex, CellLevel& cells, F
       cells_(cells),
       facets_(facets),
       curves_(curves),
+      criteria_(criteria),
       min_size_sq_(min_size * min_size),
       threads_(criteria.cell_size.is_concurrent() ? threads : 1),
       // A facet size or facet distance that may not be called from two
@@ -120,6 +133,13 @@ void RefinementLanes::start() {
     hi = std::max(hi, x);
   }
   const double reach = (hi - lo) / kCoarse;
+  Box3 box = Box3::empty();
+  for (auto v = tr_.finite_vertices_begin(); v != tr_.finite_vertices_end(); ++v)
+    box.grow(to_point3(v->point()));
+  const double tets = estimate_elements(criteria_, box, 0).tetrahedra;
+  blocks_ = MortonBlocks(box.lo, box.hi,
+                         MortonBlocks::bits_for(tets, kEstimatedTetsPerBlock, kMaxBlockBits));
+  for (int l = 0; l < 2; ++l) cells_.lane_queue(l).set_blocks(&blocks_);
   cells_.set_lanes(true, reach * reach, &cut_);
   facets_.set_lanes(surface_, reach * reach, &cut_);
 }
@@ -151,7 +171,7 @@ bool RefinementLanes::round(RefinementStats& stats, const Deadline& deadline) {
     parked->clear();
   }
   for (int l = 0; l < 2; ++l) {
-    BucketQueue<ElementEntry>& q = cells_.lane_queue(l);
+    LaneCellQueue& q = cells_.lane_queue(l);
     while (!q.empty()) {
       const ElementEntry e = q.pop();
       if (complex_.is_live(e.stamp)) entries.push_back(e);
@@ -262,7 +282,7 @@ bool RefinementLanes::round(RefinementStats& stats, const Deadline& deadline) {
 }
 
 void RefinementLanes::run(Lane& lane) {
-  BucketQueue<ElementEntry>& cells = cells_.lane_queue(lane.id);
+  LaneCellQueue& cells = cells_.lane_queue(lane.id);
   FacetLevel::Queue& facets = facets_.lane_queue(lane.id);
   while (!facets.empty() || !cells.empty()) {
     if (lane.deadline.passed(Deadline::kCheckEvery)) {
@@ -409,7 +429,7 @@ RefinementLanes::Outcome RefinementLanes::insert(Lane& lane, const Point3& cente
       }
     }
   }
-  BucketQueue<ElementEntry>& queue = cells_.lane_queue(lane.id);
+  LaneCellQueue& queue = cells_.lane_queue(lane.id);
   for (const Cell_handle& n : lane.created) {
     const Violation bad = cells_.violation(n);
     if (bad) queue.push(CellLevel::bucket_of(bad.priority), CellLevel::entry(n, bad));

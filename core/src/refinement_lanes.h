@@ -35,6 +35,7 @@
 #include "level_cells.h"
 #include "level_curves.h"
 #include "level_facets.h"
+#include "morton_blocks.h"
 #include "optimize/cone_hole.h"
 #include "rdmesh/mesher.h"
 #include "restricted_complex.h"
@@ -53,9 +54,10 @@ class RefinementLanes {
                   const CurveLevel& curves, const Criteria& criteria, double min_size, int threads,
                   bool smooth);
 
-  /// Cuts space along its longest axis through the middle of the vertices and
-  /// turns the cell level's lanes on, and the facet level's (see the constructor).
-  /// Before the first cells are queued.
+  /// Cuts space along its longest axis through the middle of the vertices,
+  /// cuts the vertices' box into the blocks of the lanes' cell queues and
+  /// turns the cell level's lanes on, and the facet level's (see the
+  /// constructor). Before the first cells are queued.
   void start();
   /// Whether a lane has elements queued, or the levels parked some for a round.
   bool pending() const;
@@ -84,11 +86,13 @@ class RefinementLanes {
   CellLevel& cells_;
   FacetLevel& facets_;
   const CurveLevel& curves_;
+  const Criteria& criteria_;
   double min_size_sq_;
   int threads_;
   bool surface_;
   std::array<int, 3> axes_{0, 1, 2};
   LaneCut cut_;
+  MortonBlocks blocks_;  ///< the blocks of the lanes' cell queues (LaneCellQueue)
   std::size_t rounds_ = 0;
   std::vector<ElementEntry> crossed_;  ///< entries whose zone crossed the last cut
 };

@@ -23,7 +23,8 @@ struct ExudationOptions {
   /// Stop after this many seconds; 0 = no limit.
   double time_limit_seconds = 0;
   /// Vertices with an incident tetrahedron whose smallest dihedral angle is
-  /// below this bound (degrees) are pumped, worst first.
+  /// below this bound (degrees) are pumped, worst first within blocks of
+  /// space taken one after the other.
   double sliver_bound_deg = 25;
   /// Weight bound: a vertex's weight stays <= this fraction of the squared
   /// distance to its nearest neighbour. CDE+00 prove that no vertex gets

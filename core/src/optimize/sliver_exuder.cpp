@@ -1,4 +1,4 @@
-// The exudation driver: worst-first queue of vertices, weight bounds, time
+// The exudation driver: queue of vertices (by blocks, worst first), weight bounds, time
 // limit and statistics. One vertex step is WeightPump (weight_pump.cpp).
 #include "sliver_exuder.h"
 

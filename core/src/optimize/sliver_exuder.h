@@ -5,9 +5,10 @@
 // its weight before, a protecting ball's or 0; N(v): the distance to its
 // nearest neighbour), chosen by WeightPump to maximize the
 // smallest dihedral angle of the cells of D|O around it. Vertices incident to
-// a cell below the sliver bound are processed worst first (by the smallest
-// dihedral angle of their incident domain cells); a vertex whose star changed
-// is queued again. The smallest dihedral angle of the mesh never decreases:
+// a cell below the sliver bound are processed block by block of space
+// (Morton order, sliver_queue_order.h) and worst first within a block (by the
+// smallest dihedral angle of their incident domain cells); a vertex whose
+// star changed is queued again. The smallest dihedral angle of the mesh never decreases:
 // a move is applied only if it strictly raises the minimum over the cells it
 // replaces.
 //
