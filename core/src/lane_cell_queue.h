@@ -26,13 +26,16 @@ class LaneCellQueue {
   }
   bool empty() const { return size_ == 0; }
   std::size_t size() const { return size_; }
+  /// Queues `e` in `bucket` (BucketQueue's) of the block of its cell's circumcentre.
   void push(std::size_t bucket, const ElementEntry& e) {
-    if (queues_.empty()) set_blocks(nullptr);
+    if (queues_.empty()) set_blocks(blocks_);  // the first push, or after release()
     const std::size_t b = blocks_ == nullptr ? 0 : blocks_->block(e.cell->info().circumcenter);
     queues_[b].push(bucket, e);
     nonempty_[b / 64] |= std::uint64_t{1} << (b % 64);
     ++size_;
   }
+  /// Removes and returns the next entry: of the first non-empty block in curve
+  /// order, BucketQueue's next there. Not empty.
   ElementEntry pop() {
     std::size_t w = 0;
     while (nonempty_[w] == 0) ++w;
@@ -45,6 +48,7 @@ class LaneCellQueue {
     --size_;
     return e;
   }
+  /// Empties the queue and frees its storage; it keeps its blocks.
   void release() {
     std::vector<BucketQueue<ElementEntry>>().swap(queues_);
     std::vector<std::uint64_t>().swap(nonempty_);

@@ -52,8 +52,9 @@ constexpr double kBallReach = 3.0;
 /// Tetrahedra the criteria give over the box of a block of the lanes' cell
 /// queues (estimate_elements, which counts about twice a sphere's tets in its
 /// box), at least. A lane refines its blocks one after the other, in Morton
-/// order, so that its insertions read and write cells nearby in memory, until
-/// the mesh outgrows the cache, as they do in strict priority order. Unit
+/// order, so that its insertions read and write cells nearby in memory; in
+/// strict priority order they read cold cells once the mesh outgrows the
+/// cache. Unit
 /// sphere, one thread, 9.4 M tets: refinement 18.2-18.3 s with 512 blocks
 /// (35 k estimated tets each), 21.8 s with 64, 20.1 s with 4096, 22.6-24.0 s
 /// with one; 0.6% more tets with 512 blocks, 1.2% with 4096. At 1.2 M tets,

@@ -89,6 +89,30 @@ TEST(LaneCellQueue, BlocksInCurveOrderThenTheWorstBucketAndTheNewestEntry) {
   EXPECT_EQ(pops, next);
 }
 
+TEST(LaneCellQueue, KeepsItsBlocksAfterRelease) {
+  // A refiner frees its empty queues after refining, and may refine again
+  // (a run that finishes after a refused restart): the blocks still hold.
+  Triangulation tr;
+  for (int i = 0; i < 8; ++i)
+    tr.insert(Weighted_point(Kernel::Point_3(i & 1, (i >> 1) & 1, (i >> 2) & 1), 0));
+  std::vector<Cell_handle> cells;
+  for (auto c = tr.all_cells_begin(); c != tr.all_cells_end(); ++c) cells.push_back(c);
+  ASSERT_GE(cells.size(), 2u);
+  cells[0]->info().circumcenter = {0.9, 0.9, 0.9};  // the last of 8 blocks
+  cells[1]->info().circumcenter = {0.1, 0.1, 0.1};  // the first
+  const MortonBlocks blocks({0, 0, 0}, {1, 1, 1}, 3);
+  LaneCellQueue queue;
+  queue.set_blocks(&blocks);
+  for (int round = 0; round < 2; ++round) {
+    queue.push(9, ElementEntry{1.0, cells[0], 1, -1});  // worse bucket, later block
+    queue.push(0, ElementEntry{1.0, cells[1], 2, -1});
+    EXPECT_EQ(queue.pop().stamp, 2u) << "round " << round;
+    EXPECT_EQ(queue.pop().stamp, 1u) << "round " << round;
+    ASSERT_TRUE(queue.empty());
+    queue.release();
+  }
+}
+
 TEST(LaneCellQueue, WithoutBlocksItIsTheBucketQueue) {
   Triangulation tr;
   for (int i = 0; i < 8; ++i)
