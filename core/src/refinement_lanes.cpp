@@ -54,8 +54,8 @@ constexpr double kBallReach = 3.0;
 /// box), at least. A lane refines its blocks one after the other, in Morton
 /// order, so that its insertions read and write cells nearby in memory; in
 /// strict priority order they read cold cells once the mesh outgrows the
-/// cache. Unit
-/// sphere, one thread, 9.4 M tets: refinement 18.2-18.3 s with 512 blocks
+/// cache. Unit sphere, one thread, 9.4 M tets (experiment runs of one
+/// session, alternated): refinement 18.2-18.3 s with 512 blocks
 /// (35 k estimated tets each), 21.8 s with 64, 20.1 s with 4096, 22.6-24.0 s
 /// with one; 0.6% more tets with 512 blocks, 1.2% with 4096. At 1.2 M tets,
 /// 64 blocks: 0.6% more tets, 2.0 s against 2.2-2.4 s.
@@ -122,21 +122,14 @@ RefinementLanes::RefinementLanes(RestrictedComplex& complex, CellLevel& cells, F
                criteria.facet_distance.is_concurrent()) {}
 
 void RefinementLanes::start() {
-  axes_ = axes_by_extent(tr_);
+  const Box3 box = vertex_box(tr_);
+  axes_ = axes_by_extent(box);
   const int axis = axes_[0];
   std::vector<double> values;
   for (auto v = tr_.finite_vertices_begin(); v != tr_.finite_vertices_end(); ++v)
     values.push_back(coordinate(to_point3(v->point()), axis));
   cut_ = cut_at(tr_, axis, median(values));
-  double lo = cut_.split, hi = cut_.split;
-  for (const double x : values) {
-    lo = std::min(lo, x);
-    hi = std::max(hi, x);
-  }
-  const double reach = (hi - lo) / kCoarse;
-  Box3 box = Box3::empty();
-  for (auto v = tr_.finite_vertices_begin(); v != tr_.finite_vertices_end(); ++v)
-    box.grow(to_point3(v->point()));
+  const double reach = (coordinate(box.hi, axis) - coordinate(box.lo, axis)) / kCoarse;
   const double tets = estimate_elements(criteria_, box, 0).tetrahedra;
   blocks_ = MortonBlocks(box.lo, box.hi,
                          MortonBlocks::bits_for(tets, kEstimatedTetsPerBlock, kMaxBlockBits));

@@ -1,7 +1,6 @@
 #include "exudation_lanes.h"
 
 #include <algorithm>
-#include <limits>
 
 #include "../lane_cut.h"
 
@@ -36,20 +35,18 @@ void assign_lanes_at(Triangulation& tr, int axis, double split) {
   cut.infinite->info().lane = cut.infinite_in_lanes ? kAnyLane : kNoLane;
 }
 
-std::array<int, 3> axes_by_extent(const Triangulation& tr) {
-  double lo[3], hi[3];
-  std::fill(lo, lo + 3, std::numeric_limits<double>::infinity());
-  std::fill(hi, hi + 3, -std::numeric_limits<double>::infinity());
-  for (auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v) {
-    for (int a = 0; a < 3; ++a) {
-      lo[a] = std::min(lo[a], coordinate(v, a));
-      hi[a] = std::max(hi[a], coordinate(v, a));
-    }
-  }
+Box3 vertex_box(const Triangulation& tr) {
+  Box3 box = Box3::empty();
+  for (auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
+    box.grow(to_point3(v->point()));
+  return box;
+}
+
+std::array<int, 3> axes_by_extent(const Box3& box) {
+  const auto extent = [&](int a) { return coordinate(box.hi, a) - coordinate(box.lo, a); };
   std::array<int, 3> axes = {0, 1, 2};
   // Stable: equal extents keep x, y, z order.
-  std::stable_sort(axes.begin(), axes.end(),
-                   [&](int a, int b) { return hi[a] - lo[a] > hi[b] - lo[b]; });
+  std::stable_sort(axes.begin(), axes.end(), [&](int a, int b) { return extent(a) > extent(b); });
   return axes;
 }
 

@@ -52,7 +52,9 @@ inline double coordinate(const Point3& p, int axis) {
 /// where a cut goes. Reorders them.
 double median(std::vector<double>& values);
 
-/// The three axes by decreasing extent of the triangulation's finite vertices.
-std::array<int, 3> axes_by_extent(const Triangulation& tr);
+/// The box of the triangulation's finite vertices.
+Box3 vertex_box(const Triangulation& tr);
+/// The three axes by decreasing extent of `box` (equal extents in x, y, z order).
+std::array<int, 3> axes_by_extent(const Box3& box);
 
 }  // namespace rdmesh::detail

@@ -278,7 +278,7 @@ class Exuder {
     for (int l = 0; l < kExudationLanes; ++l)
       lanes.push_back(std::make_unique<Lane>(tr_, l, next_stamp, limits_, chains_));
     Lane whole(tr_, -1, next_stamp, limits_, chains_);
-    const std::array<int, 3> axes = axes_by_extent(tr_);
+    const std::array<int, 3> axes = axes_by_extent(box_);
     const int passes = std::max(1, options_.passes);
     for (int pass = 1; pass <= passes && !stats.time_limit_reached; ++pass) {
       bound_cosine_ = std::cos(options_.sliver_bound_deg * pass / passes * M_PI / 180);
@@ -434,16 +434,16 @@ class Exuder {
     return {order_.key(cosine, to_point3(v->point())), v};
   }
 
-  /// Vertex ids, no moves yet, nearest-neighbour distances to be lowered and
-  /// the queue's order over the vertices' box.
+  /// Vertex ids, no moves yet, nearest-neighbour distances to be lowered,
+  /// the vertices' box and the queue's order over it.
   void index_vertices() {
     int n = 0;
-    Box3 box = Box3::empty();
+    box_ = Box3::empty();
     for (auto v = tr_.finite_vertices_begin(); v != tr_.finite_vertices_end(); ++v) {
       v->info().index = n++;
-      box.grow(to_point3(v->point()));
+      box_.grow(to_point3(v->point()));
     }
-    if (n > 0) order_ = SliverQueueOrder(box.lo, box.hi, static_cast<std::size_t>(n));
+    if (n > 0) order_ = SliverQueueOrder(box_.lo, box_.hi, static_cast<std::size_t>(n));
     nearest_sq_.assign(static_cast<std::size_t>(n), std::numeric_limits<double>::infinity());
     moves_.assign(static_cast<std::size_t>(n), 0);
   }
@@ -504,6 +504,7 @@ class Exuder {
   /// cosine as it was at change worst_version_ (pump passes).
   std::vector<std::uint32_t> star_version_, worst_version_;
   std::vector<double> worst_;
+  Box3 box_ = Box3::empty();  ///< of the vertices, as index_vertices() found them
   SliverQueueOrder order_{Point3{}, Point3{}, 0};
   std::vector<Cell_handle> cells_;  ///< finite cells, scratch of domain_cosines
   std::vector<double> cosines_;
