@@ -141,11 +141,17 @@ void measure(const std::vector<double>& cosines, int threads, double& min_deg,
   std::vector<DihedralHistogram> parts(chunk_count(cosines.size()), DihedralHistogram{});
   std::vector<double> worsts(parts.size(), kOutside);
   for_chunks(cosines.size(), threads, [&](std::size_t k, std::size_t begin, std::size_t end) {
+    // Summed here and stored once: neighbouring chunks' sums share cache lines,
+    // and two threads writing them at every cell ran slower than one thread.
+    double worst = kOutside;
+    DihedralHistogram part{};
     for (std::size_t i = begin; i < end; ++i) {
       if (cosines[i] == kOutside) continue;
-      worsts[k] = std::max(worsts[k], cosines[i]);
-      add_to_histogram(parts[k], cosine_to_degrees(cosines[i]));
+      worst = std::max(worst, cosines[i]);
+      add_to_histogram(part, cosine_to_degrees(cosines[i]));
     }
+    worsts[k] = worst;
+    parts[k] = part;
   });
   histogram.fill(0);
   double worst = kOutside;
