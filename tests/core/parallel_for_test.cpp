@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
@@ -102,6 +103,28 @@ TEST(ParallelFor, ItsHelperThreadsOutliveTheLoopsAndServeTheNextOnes) {
   const std::set<pid_t> three = helper_threads(24, 3);
   EXPECT_EQ(three.size(), 2u);
   for (const pid_t tid : three) EXPECT_TRUE(thread_alive(tid));
+}
+
+TEST(ParallelFor, BackToBackLoopsAndLoopsAfterAPauseRunEveryTask) {
+  // The pool's helpers watch for the next loop for a while before they sleep,
+  // and the caller watches for their end: loops that follow at once, loops
+  // after a pause longer than the watch, and a helper task that outlasts the
+  // caller's watch must each run every task exactly once.
+  std::vector<int> counts(2, 0);
+  for (int loop = 0; loop < 2000; ++loop) {
+    std::atomic<int> sum{0};
+    parallel_tasks(2, 2, [&](std::size_t k) { sum += static_cast<int>(k) + 1; });
+    ASSERT_EQ(sum.load(), 3) << "loop " << loop;
+  }
+  for (int loop = 0; loop < 3; ++loop) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    std::vector<int> seen(4, 0);
+    parallel_tasks(4, 2, [&](std::size_t k) {
+      if (k == 0) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+      ++seen[k];
+    });
+    for (const int s : seen) EXPECT_EQ(s, 1);
+  }
 }
 
 TEST(ParallelFor, ALoopInsideALoopAndLoopsFromTwoThreadsAllRunEveryTask) {
