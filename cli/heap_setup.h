@@ -14,9 +14,11 @@ void start_heap_populator();
 
 // For tests: where the heap's next blocks begin (the highest end of a block
 // operator new took from it), how far the populating thread has faulted the
-// heap in (0: not yet, or no thread), and whether the kernel refused.
+// heap in (0: not yet, or no thread), whether the kernel refused, and whether
+// the thread runs in the idle scheduling class.
 std::uintptr_t heap_frontier();
 std::uintptr_t heap_populated_end();
 bool heap_populator_refused();
+bool heap_populator_idle();
 
 }  // namespace rdmesh::cli
