@@ -61,7 +61,7 @@ class RefinementLanes {
   void start();
   /// Whether a lane has elements queued, or the levels parked some for a round.
   bool pending() const;
-  /// One round: a new cut (alternating the two longest axes) through the
+  /// One round: a new cut (the axes in turn, see kShortAxis) through the
   /// median of the queued facets' and cells' centres, the lanes' queues shared out again,
   /// then both lanes refine. Stops early at `deadline` (true then).
   bool round(RefinementStats& stats, const Deadline& deadline);
@@ -90,7 +90,8 @@ class RefinementLanes {
   double min_size_sq_;
   int threads_;
   bool surface_;
-  std::array<int, 3> axes_{0, 1, 2};
+  std::array<int, 3> axes_{0, 1, 2};  ///< by decreasing extent
+  int cut_axes_ = 2;                  ///< the rounds' cuts take axes_[0, cut_axes_) in turn
   LaneCut cut_;
   MortonBlocks blocks_;  ///< the blocks of the lanes' cell queues (LaneCellQueue)
   std::size_t rounds_ = 0;

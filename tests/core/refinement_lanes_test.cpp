@@ -82,10 +82,13 @@ TEST(RefinementLanes, TheSequentialStepsLeaveSmallElementsToTheLanes) {
   // queued (CellLevel::pop, FacetLevel::pop) instead of refining them: the
   // layers along the cuts and the surface go through the lanes. Refined on
   // the spot, 24% of the cell centres and 77% of the facet centres of this
-  // sphere went in sequentially.
+  // sphere went in sequentially. The rounds' cuts take the three axes in turn
+  // and an entry may cross two of them before the sequential steps take it:
+  // with two axes and one crossing, 11.5% of the cell centres went in
+  // sequentially, now 7.7%.
   const RefinementStats s = refine_with(1, 0.05).stats;
   ASSERT_GT(s.inserted_cell_centers, 10000u);
-  EXPECT_GT(s.cell_centers_in_lanes, s.inserted_cell_centers * 85 / 100);
+  EXPECT_GT(s.cell_centers_in_lanes, s.inserted_cell_centers * 90 / 100);
   EXPECT_GT(s.facet_centers_in_lanes, s.inserted_facet_centers * 60 / 100);
 }
 
