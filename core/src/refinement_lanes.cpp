@@ -130,14 +130,13 @@ void RefinementLanes::start() {
   axes_ = axes_by_extent(box);
   // Every axis at least half as long as the longest takes its turn (at least
   // two): a cut across a short axis would cross a long part's every zone.
-  const auto extent = [&](int a) { return coordinate(box.hi, a) - coordinate(box.lo, a); };
-  cut_axes_ = extent(axes_[2]) >= kShortAxis * extent(axes_[0]) ? 3 : 2;
+  cut_axes_ = extent(box, axes_[2]) >= kShortAxis * extent(box, axes_[0]) ? 3 : 2;
   const int axis = axes_[0];
   std::vector<double> values;
   for (auto v = tr_.finite_vertices_begin(); v != tr_.finite_vertices_end(); ++v)
     values.push_back(coordinate(to_point3(v->point()), axis));
   cut_ = cut_at(tr_, axis, median(values));
-  const double reach = (coordinate(box.hi, axis) - coordinate(box.lo, axis)) / kCoarse;
+  const double reach = extent(box, axis) / kCoarse;
   const double tets = estimate_elements(criteria_, box, 0).tetrahedra;
   blocks_ = MortonBlocks(box.lo, box.hi,
                          MortonBlocks::bits_for(tets, kEstimatedTetsPerBlock, kMaxBlockBits));

@@ -43,10 +43,10 @@ Box3 vertex_box(const Triangulation& tr) {
 }
 
 std::array<int, 3> axes_by_extent(const Box3& box) {
-  const auto extent = [&](int a) { return coordinate(box.hi, a) - coordinate(box.lo, a); };
   std::array<int, 3> axes = {0, 1, 2};
   // Stable: equal extents keep x, y, z order.
-  std::stable_sort(axes.begin(), axes.end(), [&](int a, int b) { return extent(a) > extent(b); });
+  std::stable_sort(axes.begin(), axes.end(),
+                   [&](int a, int b) { return extent(box, a) > extent(box, b); });
   return axes;
 }
 

@@ -48,6 +48,10 @@ void assign_lanes_at(Triangulation& tr, int axis, double split);
 inline double coordinate(const Point3& p, int axis) {
   return axis == 0 ? p.x : axis == 1 ? p.y : p.z;
 }
+/// The extent of `box` along `axis`.
+inline double extent(const Box3& box, int axis) {
+  return coordinate(box.hi, axis) - coordinate(box.lo, axis);
+}
 /// The median of `values` (the upper one of an even count; 0 when empty),
 /// where a cut goes. Reorders them.
 double median(std::vector<double>& values);
