@@ -35,13 +35,13 @@ namespace {
 /// How long a thread watches for what it waits for before it sleeps.
 constexpr auto kSpin = std::chrono::microseconds(1000);
 
-/// Watches `ready()` until it holds or kSpin passed (false then).
+/// Watches `ready()` until it holds or kSpin passed (the caller then reads
+/// its state under the lock either way).
 template <class Ready>
-bool watch(Ready ready) {
+void watch(Ready ready) {
   const auto until = std::chrono::steady_clock::now() + kSpin;
-  for (unsigned k = 1;; ++k) {
-    if (ready()) return true;
-    if ((k & 63) == 0 && std::chrono::steady_clock::now() > until) return false;
+  for (unsigned k = 1; !ready(); ++k) {
+    if ((k & 63) == 0 && std::chrono::steady_clock::now() > until) return;
     std::this_thread::yield();
   }
 }

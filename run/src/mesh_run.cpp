@@ -1,6 +1,5 @@
 #include "rdmesh/mesh_run.h"
 
-#include <algorithm>
 #include <future>
 
 #include "model_measures.h"
